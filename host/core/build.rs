@@ -22,6 +22,9 @@ use std::path::{Path, PathBuf};
 #[path = "build/source_hash.rs"]
 mod source_hash;
 #[cfg(feature = "rebuild-spirv")]
+#[path = "build/subgroup_capabilities.rs"]
+mod subgroup_capabilities;
+#[cfg(feature = "rebuild-spirv")]
 #[path = "build/wgsl.rs"]
 mod wgsl;
 
@@ -182,8 +185,9 @@ fn embed_artifact(host_dir: &Path, spirv_dir: &Path) -> Result<()> {
 
 #[cfg(feature = "rebuild-spirv")]
 mod rebuild {
+    use super::subgroup_capabilities::drop_unused_subgroup_capabilities;
     use super::{MANIFEST, Manifest, Result, SPIRV_HEADER, WGSL_HEADER, source_hash::shader_source_hash, write_table, write_wgsl_table};
-    use spirv_builder::{ModuleResult, SpirvBuilder};
+    use spirv_builder::{Capability, ModuleResult, SpirvBuilder};
     use std::collections::BTreeMap;
     use std::path::Path;
 
@@ -204,7 +208,13 @@ mod rebuild {
 
         // One SPIR-V module per entry point: each pipeline gets a module holding only its own workgroup
         // memory and code (validation counts workgroup memory per module, and drivers compile less).
-        let mut builder = SpirvBuilder::new(&crate_dir, "spirv-unknown-vulkan1.2").multimodule(true);
+        // The subgroup capabilities are for the `::subgroups` entry points; the other modules
+        // lose them below.
+        let mut builder = SpirvBuilder::new(&crate_dir, "spirv-unknown-vulkan1.2")
+            .multimodule(true)
+            .capability(Capability::GroupNonUniform)
+            .capability(Capability::GroupNonUniformArithmetic)
+            .capability(Capability::GroupNonUniformShuffleRelative);
         builder.build_script.defaults = true;
         let result = builder.build()?;
         let ModuleResult::MultiModule(modules) = &result.module else {
@@ -218,7 +228,10 @@ mod rebuild {
             if manifest.modules.values().any(|f| *f == file) {
                 return Err(format!("two entry points map to the module file {file}").into());
             }
-            contents.insert(file.clone(), std::fs::read(path)?);
+            let bytes = std::fs::read(path)?;
+            let words: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
+            let words = drop_unused_subgroup_capabilities(&words).map_err(|e| format!("{}: {e}", path.display()))?;
+            contents.insert(file.clone(), words.iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<u8>>());
             manifest.modules.insert(entry.clone(), file);
         }
         sync(spirv_dir, &manifest, &contents, SPIRV_HEADER, "spv")?;
@@ -234,7 +247,7 @@ mod rebuild {
         }
         sync(&wgsl_dir, &wgsl_manifest, &wgsl, WGSL_HEADER, "wgsl")?;
 
-        let table: Vec<_> = modules.iter().map(|(entry, path)| (entry.clone(), path.clone())).collect();
+        let table: Vec<_> = manifest.modules.iter().map(|(entry, file)| (entry.clone(), spirv_dir.join(file))).collect();
         write_table(&table)?;
         write_wgsl_table(&wgsl_dir, &source_hash)?;
         println!("cargo::rustc-env=DOF_SHADERS_SOURCE_HASH={source_hash}");

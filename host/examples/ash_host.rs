@@ -652,7 +652,7 @@ fn main() -> Result<ExitCode> {
     // SAFETY: the handles are live and outlive the backend; the device was made with the required
     // API version, extensions and features; we do not use the queue from another thread; we drop
     // the backend only after every command buffer it recorded into has completed.
-    let mut backend = unsafe { VulkanBackend::from_raw(raw, &RawOptions { debug_names: args.validation, allocator: None })? };
+    let mut backend = unsafe { VulkanBackend::from_raw(raw, &RawOptions { debug_names: args.validation, ..Default::default() })? };
     println!("backend: {} ({}), queue with graphics: {}", backend.device_name(), backend.driver(), r.graphics);
     // SAFETY: our live storage buffers of this device with the sizes given; the library only reads
     // them; they outlive the backend's use (forgotten before the backend is dropped).

@@ -64,25 +64,25 @@ fn function_() {
     var local_24: u32;
     var local_25: f32;
     var local_26: u32;
-    var phi_112_: u32;
-    var phi_115_: u32;
-    var phi_137_: bool;
-    var phi_172_: bool;
-    var phi_200_: f32;
-    var phi_201_: f32;
-    var phi_207_: f32;
-    var phi_209_: f32;
-    var phi_345_: bool;
-    var phi_244_: u32;
     var phi_113_: u32;
     var phi_116_: u32;
-    var phi_358_: bool;
-    var phi_253_: u32;
-    var phi_256_: u32;
-    var phi_292_: u32;
-    var phi_254_: u32;
-    var phi_257_: u32;
-    var phi_373_: bool;
+    var phi_138_: bool;
+    var phi_173_: bool;
+    var phi_201_: f32;
+    var phi_202_: f32;
+    var phi_208_: f32;
+    var phi_210_: f32;
+    var phi_497_: bool;
+    var phi_245_: u32;
+    var phi_114_: u32;
+    var phi_117_: u32;
+    var phi_502_: bool;
+    var phi_396_: u32;
+    var phi_399_: u32;
+    var phi_439_: u32;
+    var phi_397_: u32;
+    var phi_400_: u32;
+    var phi_517_: bool;
 
     let _e57 = global_7;
     switch bitcast<i32>(0u) {
@@ -97,11 +97,11 @@ fn function_() {
             let _e73 = global_3.member.member;
             let _e76 = global_3.member.member_1;
             local_4 = (_e73 * _e76);
-            phi_112_ = ((_e61.x * 256u) + _e60);
-            phi_115_ = 0u;
+            phi_113_ = ((_e61.x * 256u) + _e60);
+            phi_116_ = 0u;
             loop {
-                let _e80 = phi_112_;
-                let _e82 = phi_115_;
+                let _e80 = phi_113_;
+                let _e82 = phi_116_;
                 local_5 = _e80;
                 local_6 = _e82;
                 let _e83 = local_5;
@@ -113,7 +113,7 @@ fn function_() {
                     let _e87 = local_1;
                     if (_e86 < _e87) {
                     } else {
-                        phi_358_ = true;
+                        phi_502_ = true;
                         break;
                     }
                     let _e89 = local_5;
@@ -125,74 +125,74 @@ fn function_() {
                     let _e95 = (_e94 == 0u);
                     local_10 = _e95;
                     if _e95 {
-                        phi_137_ = false;
+                        phi_138_ = false;
                     } else {
                         let _e96 = local_9;
-                        phi_137_ = (_e96 <= 2139095040u);
+                        phi_138_ = (_e96 <= 2139095040u);
                     }
-                    let _e99 = phi_137_;
+                    let _e99 = phi_138_;
                     if _e99 {
                         let _e102 = global_3.member.member_2;
                         local_11 = f32(_e102);
                         let _e104 = local_9;
                         if (_e104 == 2139095040u) {
-                            let _e109 = global_3.member.member_4.member_1;
-                            let _e114 = global_3.member.member_4.member;
-                            let _e119 = global_3.member.member_4.member_2;
-                            let _e125 = global_3.member.member_4.member_3;
-                            phi_209_ = (0.5f * ((((2f * _e109) * _e114) / (_e119 - _e114)) * _e125));
+                            let _e152 = global_3.member.member_4.member_1;
+                            let _e157 = global_3.member.member_4.member;
+                            let _e162 = global_3.member.member_4.member_2;
+                            let _e168 = global_3.member.member_4.member_3;
+                            phi_210_ = (0.5f * ((((2f * _e152) * _e157) / (_e162 - _e157)) * _e168));
                         } else {
-                            let _e128 = local_10;
-                            if _e128 {
-                                phi_172_ = false;
+                            let _e106 = local_10;
+                            if _e106 {
+                                phi_173_ = false;
                             } else {
-                                let _e129 = local_9;
-                                phi_172_ = (_e129 <= 2139095040u);
+                                let _e107 = local_9;
+                                phi_173_ = (_e107 <= 2139095040u);
                             }
-                            let _e132 = phi_172_;
-                            if _e132 {
-                                let _e136 = global_3.member.member_4.member_1;
-                                let _e141 = global_3.member.member_4.member;
-                                let _e146 = global_3.member.member_4.member_2;
-                                local_12 = _e146;
-                                let _e152 = global_3.member.member_4.member_3;
-                                let _e153 = ((((2f * _e136) * _e141) / (_e146 - _e141)) * _e152);
-                                local_13 = _e153;
-                                if (_e153 == 0f) {
-                                    phi_200_ = 0f;
+                            let _e110 = phi_173_;
+                            if _e110 {
+                                let _e114 = global_3.member.member_4.member_1;
+                                let _e119 = global_3.member.member_4.member;
+                                let _e124 = global_3.member.member_4.member_2;
+                                local_12 = _e124;
+                                let _e130 = global_3.member.member_4.member_3;
+                                let _e131 = ((((2f * _e114) * _e119) / (_e124 - _e119)) * _e130);
+                                local_13 = _e131;
+                                if (_e131 == 0f) {
+                                    phi_201_ = 0f;
                                 } else {
-                                    let _e155 = local_12;
-                                    let _e156 = local_8;
-                                    let _e159 = local_13;
-                                    phi_200_ = (_e159 * (1f - (_e155 / _e156)));
+                                    let _e133 = local_12;
+                                    let _e134 = local_8;
+                                    let _e137 = local_13;
+                                    phi_201_ = (_e137 * (1f - (_e133 / _e134)));
                                 }
-                                let _e162 = phi_200_;
-                                phi_201_ = _e162;
+                                let _e140 = phi_201_;
+                                phi_202_ = _e140;
                             } else {
-                                phi_201_ = bitcast<f32>(_e57);
+                                phi_202_ = bitcast<f32>(_e57);
                             }
-                            let _e164 = phi_201_;
-                            local_14 = _e164;
-                            if (_e164 < 0f) {
-                                let _e166 = local_14;
-                                phi_207_ = -(_e166);
+                            let _e142 = phi_202_;
+                            local_14 = _e142;
+                            if (_e142 < 0f) {
+                                let _e144 = local_14;
+                                phi_208_ = -(_e144);
                             } else {
-                                phi_207_ = _e164;
+                                phi_208_ = _e142;
                             }
-                            let _e169 = phi_207_;
-                            phi_209_ = (0.5f * _e169);
+                            let _e147 = phi_208_;
+                            phi_210_ = (0.5f * _e147);
                         }
-                        let _e172 = phi_209_;
+                        let _e172 = phi_210_;
                         let _e176 = select(_e172, 0f, ((bitcast<u32>(_e172) & 2147483647u) > 2139095040u));
                         local_25 = _e176;
                         if !((_e176 == _e176)) {
-                            phi_345_ = true;
+                            phi_497_ = true;
                         } else {
                             let _e179 = local_11;
                             let _e180 = local_25;
-                            phi_345_ = (_e179 <= _e180);
+                            phi_497_ = (_e179 <= _e180);
                         }
-                        let _e183 = phi_345_;
+                        let _e183 = phi_497_;
                         let _e184 = local_11;
                         let _e185 = local_25;
                         let _e186 = select(_e185, _e184, _e183);
@@ -200,31 +200,31 @@ fn function_() {
                         let _e196 = (_e192 + select(1u, 0u, (f32(_e192) == _e186)));
                         let _e197 = local_6;
                         let _e199 = local_6;
-                        phi_244_ = select(_e199, _e196, (_e196 > _e197));
+                        phi_245_ = select(_e199, _e196, (_e196 > _e197));
                     } else {
-                        phi_244_ = _e82;
+                        phi_245_ = _e82;
                     }
-                    let _e202 = phi_244_;
+                    let _e202 = phi_245_;
                     let _e203 = local_5;
                     let _e204 = local_3;
-                    phi_113_ = (_e203 + _e204);
-                    phi_116_ = _e202;
+                    phi_114_ = (_e203 + _e204);
+                    phi_117_ = _e202;
                 } else {
-                    phi_113_ = u32();
-                    phi_116_ = u32();
+                    phi_114_ = u32();
+                    phi_117_ = u32();
                 }
-                let _e207 = phi_113_;
-                let _e209 = phi_116_;
+                let _e207 = phi_114_;
+                let _e209 = phi_117_;
                 continue;
                 continuing {
                     let _e210 = local_7;
-                    phi_112_ = _e207;
-                    phi_115_ = _e209;
-                    phi_358_ = false;
+                    phi_113_ = _e207;
+                    phi_116_ = _e209;
+                    phi_502_ = false;
                     break if !(_e210);
                 }
             }
-            let _e213 = phi_358_;
+            let _e213 = phi_502_;
             if _e213 {
                 break;
             }
@@ -238,11 +238,11 @@ fn function_() {
             global_5[_e216] = _e218;
             storageBarrier();
             workgroupBarrier();
-            phi_253_ = 1u;
-            phi_256_ = 0u;
+            phi_396_ = 1u;
+            phi_399_ = 0u;
             loop {
-                let _e220 = phi_253_;
-                let _e222 = phi_256_;
+                let _e220 = phi_396_;
+                let _e222 = phi_399_;
                 local_15 = _e220;
                 local_16 = _e222;
                 let _e223 = local_15;
@@ -258,7 +258,7 @@ fn function_() {
                     local_18 = _e230;
                     if (_e230 < 512u) {
                     } else {
-                        phi_373_ = true;
+                        phi_517_ = true;
                         break;
                     }
                     let _e232 = local_18;
@@ -274,18 +274,18 @@ fn function_() {
                         local_20 = _e242;
                         if (_e242 < 512u) {
                         } else {
-                            phi_373_ = true;
+                            phi_517_ = true;
                             break;
                         }
                         let _e244 = local_20;
                         let _e246 = global_5[_e244];
                         let _e247 = local_19;
                         let _e249 = local_19;
-                        phi_292_ = select(_e249, _e246, (_e246 > _e247));
+                        phi_439_ = select(_e249, _e246, (_e246 > _e247));
                     } else {
-                        phi_292_ = _e234;
+                        phi_439_ = _e234;
                     }
-                    let _e252 = phi_292_;
+                    let _e252 = phi_439_;
                     local_21 = _e252;
                     let _e253 = local_26;
                     let _e254 = local;
@@ -293,7 +293,7 @@ fn function_() {
                     local_22 = _e255;
                     if (_e255 < 512u) {
                     } else {
-                        phi_373_ = true;
+                        phi_517_ = true;
                         break;
                     }
                     let _e257 = local_22;
@@ -302,24 +302,24 @@ fn function_() {
                     storageBarrier();
                     workgroupBarrier();
                     let _e260 = local_15;
-                    phi_254_ = (_e260 * 2u);
-                    phi_257_ = _e227;
+                    phi_397_ = (_e260 * 2u);
+                    phi_400_ = _e227;
                 } else {
-                    phi_254_ = u32();
-                    phi_257_ = u32();
+                    phi_397_ = u32();
+                    phi_400_ = u32();
                 }
-                let _e263 = phi_254_;
-                let _e265 = phi_257_;
+                let _e263 = phi_397_;
+                let _e265 = phi_400_;
                 continue;
                 continuing {
                     let _e266 = local_17;
-                    phi_253_ = _e263;
-                    phi_256_ = _e265;
-                    phi_373_ = _e213;
+                    phi_396_ = _e263;
+                    phi_399_ = _e265;
+                    phi_517_ = _e213;
                     break if !(_e266);
                 }
             }
-            let _e269 = phi_373_;
+            let _e269 = phi_517_;
             if _e269 {
                 break;
             }

@@ -57,31 +57,31 @@ fn function_() {
     var local_31: u32;
     var local_32: u32;
     var local_33: u32;
-    var phi_79_: u32;
-    var phi_282_: bool;
-    var phi_81_: u32;
-    var phi_100_: u32;
-    var phi_103_: u32;
-    var phi_126_: u32;
-    var phi_101_: u32;
+    var phi_83_: u32;
+    var phi_425_: bool;
+    var phi_85_: u32;
     var phi_104_: u32;
-    var phi_278_: bool;
-    var phi_135_: u32;
-    var phi_138_: u32;
-    var phi_174_: u32;
-    var phi_136_: u32;
-    var phi_139_: u32;
-    var phi_284_: bool;
-    var phi_210_: u32;
-    var phi_212_: u32;
-    var phi_215_: u32;
-    var phi_244_: u32;
-    var phi_213_: u32;
-    var phi_216_: u32;
-    var phi_290_: bool;
-    var phi_296_: bool;
-    var phi_82_: u32;
-    var phi_295_: bool;
+    var phi_107_: u32;
+    var phi_130_: u32;
+    var phi_105_: u32;
+    var phi_108_: u32;
+    var phi_421_: bool;
+    var phi_277_: u32;
+    var phi_280_: u32;
+    var phi_316_: u32;
+    var phi_278_: u32;
+    var phi_281_: u32;
+    var phi_427_: bool;
+    var phi_353_: u32;
+    var phi_355_: u32;
+    var phi_358_: u32;
+    var phi_387_: u32;
+    var phi_356_: u32;
+    var phi_359_: u32;
+    var phi_451_: bool;
+    var phi_458_: bool;
+    var phi_86_: u32;
+    var phi_457_: bool;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -98,17 +98,17 @@ fn function_() {
             local_5 = _e66;
             if ((_e65 % 1024u) > 0u) {
                 let _e69 = local_5;
-                phi_79_ = (_e69 + 1u);
+                phi_83_ = (_e69 + 1u);
             } else {
-                phi_79_ = _e66;
+                phi_83_ = _e66;
             }
-            let _e72 = phi_79_;
+            let _e72 = phi_83_;
             local_6 = _e72;
-            phi_282_ = false;
-            phi_81_ = _e55.x;
+            phi_425_ = false;
+            phi_85_ = _e55.x;
             loop {
-                let _e74 = phi_282_;
-                let _e76 = phi_81_;
+                let _e74 = phi_425_;
+                let _e76 = phi_85_;
                 local_7 = _e76;
                 let _e77 = local_7;
                 let _e78 = local_6;
@@ -120,11 +120,11 @@ fn function_() {
                     local_9 = (_e82 + (_e83 * 1024u));
                     let _e86 = local_4;
                     local_10 = (_e82 + _e86);
-                    phi_100_ = 0u;
-                    phi_103_ = 0u;
+                    phi_104_ = 0u;
+                    phi_107_ = 0u;
                     loop {
-                        let _e89 = phi_100_;
-                        let _e91 = phi_103_;
+                        let _e89 = phi_104_;
+                        let _e91 = phi_107_;
                         local_11 = _e89;
                         local_12 = _e91;
                         let _e92 = local_11;
@@ -142,44 +142,44 @@ fn function_() {
                                 let _e103 = local_1;
                                 if (_e102 < _e103) {
                                 } else {
-                                    phi_278_ = true;
+                                    phi_421_ = true;
                                     break;
                                 }
                                 let _e105 = local_14;
                                 let _e108 = global_5.member[_e105];
                                 let _e109 = local_12;
-                                phi_126_ = (_e109 + _e108);
+                                phi_130_ = (_e109 + _e108);
                             } else {
-                                phi_126_ = _e91;
+                                phi_130_ = _e91;
                             }
-                            let _e112 = phi_126_;
+                            let _e112 = phi_130_;
                             let _e113 = local_11;
-                            phi_101_ = (_e113 + 1u);
-                            phi_104_ = _e112;
+                            phi_105_ = (_e113 + 1u);
+                            phi_108_ = _e112;
                         } else {
-                            phi_101_ = u32();
-                            phi_104_ = u32();
+                            phi_105_ = u32();
+                            phi_108_ = u32();
                         }
-                        let _e116 = phi_101_;
-                        let _e118 = phi_104_;
+                        let _e116 = phi_105_;
+                        let _e118 = phi_108_;
                         continue;
                         continuing {
                             let _e119 = local_13;
-                            phi_100_ = _e116;
-                            phi_103_ = _e118;
-                            phi_278_ = _e74;
+                            phi_104_ = _e116;
+                            phi_107_ = _e118;
+                            phi_421_ = _e74;
                             break if !(_e119);
                         }
                     }
-                    let _e122 = phi_278_;
-                    phi_295_ = _e122;
+                    let _e122 = phi_421_;
+                    phi_457_ = _e122;
                     if _e122 {
                         break;
                     }
                     let _e123 = local;
                     if (_e123 < 512u) {
                     } else {
-                        phi_295_ = true;
+                        phi_457_ = true;
                         break;
                     }
                     let _e125 = local;
@@ -187,11 +187,11 @@ fn function_() {
                     global_3[_e125] = _e127;
                     storageBarrier();
                     workgroupBarrier();
-                    phi_135_ = 1u;
-                    phi_138_ = 0u;
+                    phi_277_ = 1u;
+                    phi_280_ = 0u;
                     loop {
-                        let _e129 = phi_135_;
-                        let _e131 = phi_138_;
+                        let _e129 = phi_277_;
+                        let _e131 = phi_280_;
                         local_15 = _e129;
                         local_16 = _e131;
                         let _e132 = local_15;
@@ -207,7 +207,7 @@ fn function_() {
                             local_18 = _e139;
                             if (_e139 < 512u) {
                             } else {
-                                phi_284_ = true;
+                                phi_427_ = true;
                                 break;
                             }
                             let _e141 = local_18;
@@ -223,17 +223,17 @@ fn function_() {
                                 local_20 = _e151;
                                 if (_e151 < 512u) {
                                 } else {
-                                    phi_284_ = true;
+                                    phi_427_ = true;
                                     break;
                                 }
                                 let _e153 = local_20;
                                 let _e155 = global_3[_e153];
                                 let _e156 = local_19;
-                                phi_174_ = (_e155 + _e156);
+                                phi_316_ = (_e155 + _e156);
                             } else {
-                                phi_174_ = _e143;
+                                phi_316_ = _e143;
                             }
-                            let _e159 = phi_174_;
+                            let _e159 = phi_316_;
                             local_21 = _e159;
                             let _e160 = local_33;
                             let _e161 = local;
@@ -241,7 +241,7 @@ fn function_() {
                             local_22 = _e162;
                             if (_e162 < 512u) {
                             } else {
-                                phi_284_ = true;
+                                phi_427_ = true;
                                 break;
                             }
                             let _e164 = local_22;
@@ -250,25 +250,25 @@ fn function_() {
                             storageBarrier();
                             workgroupBarrier();
                             let _e167 = local_15;
-                            phi_136_ = (_e167 * 2u);
-                            phi_139_ = _e136;
+                            phi_278_ = (_e167 * 2u);
+                            phi_281_ = _e136;
                         } else {
-                            phi_136_ = u32();
-                            phi_139_ = u32();
+                            phi_278_ = u32();
+                            phi_281_ = u32();
                         }
-                        let _e170 = phi_136_;
-                        let _e172 = phi_139_;
+                        let _e170 = phi_278_;
+                        let _e172 = phi_281_;
                         continue;
                         continuing {
                             let _e173 = local_17;
-                            phi_135_ = _e170;
-                            phi_138_ = _e172;
-                            phi_284_ = _e122;
+                            phi_277_ = _e170;
+                            phi_280_ = _e172;
+                            phi_427_ = _e122;
                             break if !(_e173);
                         }
                     }
-                    let _e176 = phi_284_;
-                    phi_295_ = _e176;
+                    let _e176 = phi_427_;
+                    phi_457_ = _e176;
                     if _e176 {
                         break;
                     }
@@ -278,7 +278,7 @@ fn function_() {
                     local_23 = _e179;
                     if (_e179 < 512u) {
                     } else {
-                        phi_295_ = true;
+                        phi_457_ = true;
                         break;
                     }
                     let _e181 = local_23;
@@ -286,26 +286,26 @@ fn function_() {
                     local_24 = _e183;
                     let _e184 = local;
                     if (_e184 == 0u) {
-                        phi_210_ = 0u;
+                        phi_353_ = 0u;
                     } else {
                         let _e186 = local_23;
                         let _e187 = (_e186 - 1u);
                         local_25 = _e187;
                         if (_e187 < 512u) {
                         } else {
-                            phi_295_ = true;
+                            phi_457_ = true;
                             break;
                         }
                         let _e189 = local_25;
                         let _e191 = global_3[_e189];
-                        phi_210_ = _e191;
+                        phi_353_ = _e191;
                     }
-                    let _e193 = phi_210_;
-                    phi_212_ = 0u;
-                    phi_215_ = _e193;
+                    let _e193 = phi_353_;
+                    phi_355_ = 0u;
+                    phi_358_ = _e193;
                     loop {
-                        let _e195 = phi_212_;
-                        let _e197 = phi_215_;
+                        let _e195 = phi_355_;
+                        let _e197 = phi_358_;
                         local_26 = _e195;
                         local_27 = _e197;
                         let _e198 = local_26;
@@ -325,7 +325,7 @@ fn function_() {
                                 local_30 = _e210;
                                 if _e210 {
                                 } else {
-                                    phi_290_ = true;
+                                    phi_451_ = true;
                                     break;
                                 }
                                 let _e211 = local_29;
@@ -334,38 +334,38 @@ fn function_() {
                                 let _e215 = local_30;
                                 if _e215 {
                                 } else {
-                                    phi_290_ = true;
+                                    phi_451_ = true;
                                     break;
                                 }
                                 let _e216 = local_27;
                                 global_5.member[_e211] = _e216;
                                 let _e217 = local_27;
                                 let _e218 = local_31;
-                                phi_244_ = (_e217 + _e218);
+                                phi_387_ = (_e217 + _e218);
                             } else {
-                                phi_244_ = _e197;
+                                phi_387_ = _e197;
                             }
-                            let _e221 = phi_244_;
+                            let _e221 = phi_387_;
                             let _e222 = local_26;
-                            phi_213_ = (_e222 + 1u);
-                            phi_216_ = _e221;
+                            phi_356_ = (_e222 + 1u);
+                            phi_359_ = _e221;
                         } else {
-                            phi_213_ = u32();
-                            phi_216_ = u32();
+                            phi_356_ = u32();
+                            phi_359_ = u32();
                         }
-                        let _e225 = phi_213_;
-                        let _e227 = phi_216_;
+                        let _e225 = phi_356_;
+                        let _e227 = phi_359_;
                         continue;
                         continuing {
                             let _e228 = local_28;
-                            phi_212_ = _e225;
-                            phi_215_ = _e227;
-                            phi_290_ = _e176;
+                            phi_355_ = _e225;
+                            phi_358_ = _e227;
+                            phi_451_ = _e176;
                             break if !(_e228);
                         }
                     }
-                    let _e231 = phi_290_;
-                    phi_295_ = _e231;
+                    let _e231 = phi_451_;
+                    phi_457_ = _e231;
                     if _e231 {
                         break;
                     }
@@ -378,7 +378,7 @@ fn function_() {
                         let _e239 = local_2;
                         if (_e238 < _e239) {
                         } else {
-                            phi_295_ = true;
+                            phi_457_ = true;
                             break;
                         }
                         let _e241 = local_32;
@@ -389,24 +389,24 @@ fn function_() {
                     workgroupBarrier();
                     let _e245 = local_7;
                     let _e246 = local_3;
-                    phi_296_ = _e231;
-                    phi_82_ = (_e245 + _e246);
+                    phi_458_ = _e231;
+                    phi_86_ = (_e245 + _e246);
                 } else {
-                    phi_296_ = _e74;
-                    phi_82_ = u32();
+                    phi_458_ = _e74;
+                    phi_86_ = u32();
                 }
-                let _e249 = phi_296_;
-                let _e251 = phi_82_;
+                let _e249 = phi_458_;
+                let _e251 = phi_86_;
                 continue;
                 continuing {
                     let _e252 = local_8;
-                    phi_282_ = _e249;
-                    phi_81_ = _e251;
-                    phi_295_ = _e249;
+                    phi_425_ = _e249;
+                    phi_85_ = _e251;
+                    phi_457_ = _e249;
                     break if !(_e252);
                 }
             }
-            let _e255 = phi_295_;
+            let _e255 = phi_457_;
             if _e255 {
                 break;
             }

@@ -554,299 +554,299 @@ fn function_() {
     var local_457: array<bool, 1>;
     var local_458: array<u32, 1>;
     var local_459: array<bool, 1>;
-    var phi_4514_: bool;
-    var phi_4516_: bool;
-    var phi_4517_: bool;
-    var phi_4572_: array<f32, 3>;
+    var phi_4696_: bool;
+    var phi_4698_: bool;
+    var phi_4699_: bool;
+    var phi_4754_: array<f32, 3>;
     var phi_362_: u32;
     var phi_365_: u32;
     var phi_397_: u32;
     var phi_363_: u32;
     var phi_366_: u32;
-    var phi_4729_: bool;
-    var phi_408_: u32;
-    var phi_409_: u32;
-    var phi_4736_: bool;
-    var phi_453_: u32;
-    var phi_454_: u32;
-    var phi_4741_: bool;
-    var phi_526_: bool;
-    var phi_528_: bool;
-    var phi_529_: bool;
-    var phi_574_: f32;
-    var phi_585_: u32;
-    var phi_586_: u32;
-    var phi_4744_: bool;
-    var phi_4776_: bool;
-    var phi_636_: u32;
-    var phi_639_: u32;
-    var phi_719_: array<f32, 3>;
-    var phi_730_: f32;
-    var phi_756_: u32;
-    var phi_769_: u32;
-    var phi_808_: type_29;
-    var phi_822_: f32;
-    var phi_851_: bool;
-    var phi_879_: f32;
-    var phi_880_: f32;
-    var phi_886_: f32;
-    var phi_888_: f32;
-    var phi_4766_: bool;
-    var phi_1003_: f32;
-    var phi_1006_: f32;
-    var phi_1017_: f32;
-    var phi_1020_: f32;
-    var phi_1044_: bool;
-    var phi_1080_: bool;
-    var phi_1416_: u32;
-    var phi_1419_: f32;
-    var phi_1421_: array<f32, 2>;
-    var phi_1417_: u32;
-    var phi_1420_: f32;
-    var phi_1422_: array<f32, 2>;
-    var phi_1474_: f32;
-    var phi_1196_: f32;
-    var phi_1197_: f32;
-    var phi_1198_: bool;
-    var phi_1199_: f32;
-    var phi_1200_: bool;
-    var phi_1201_: f32;
-    var phi_1202_: bool;
-    var phi_1252_: f32;
-    var phi_1253_: f32;
-    var phi_1254_: bool;
-    var phi_1255_: f32;
-    var phi_1256_: bool;
-    var phi_1257_: f32;
-    var phi_1258_: bool;
-    var phi_1308_: f32;
-    var phi_1309_: f32;
-    var phi_1310_: bool;
-    var phi_1311_: f32;
-    var phi_1312_: bool;
-    var phi_1313_: f32;
-    var phi_1314_: bool;
-    var phi_1365_: f32;
-    var phi_1366_: f32;
-    var phi_1367_: bool;
-    var phi_1368_: f32;
-    var phi_1369_: bool;
-    var phi_1370_: f32;
-    var phi_1371_: bool;
-    var phi_1382_: f32;
-    var phi_1384_: f32;
-    var phi_1385_: bool;
-    var phi_1386_: f32;
-    var phi_1387_: bool;
-    var phi_1388_: f32;
-    var phi_1389_: bool;
-    var phi_1394_: f32;
-    var phi_1487_: f32;
-    var phi_1488_: f32;
-    var phi_1489_: f32;
-    var phi_1495_: u32;
-    var phi_1498_: f32;
-    var phi_1496_: u32;
-    var phi_1499_: f32;
-    var phi_1018_: f32;
-    var phi_1021_: f32;
-    var phi_4755_: bool;
-    var phi_4823_: bool;
-    var phi_1004_: f32;
-    var phi_1007_: f32;
-    var phi_4822_: bool;
-    var phi_988_: f32;
-    var phi_4840_: bool;
+    var phi_4901_: bool;
+    var phi_494_: u32;
+    var phi_495_: u32;
+    var phi_4908_: bool;
+    var phi_544_: u32;
+    var phi_545_: u32;
+    var phi_4931_: bool;
+    var phi_617_: bool;
+    var phi_619_: bool;
+    var phi_620_: bool;
+    var phi_665_: f32;
+    var phi_676_: u32;
+    var phi_677_: u32;
+    var phi_4936_: bool;
+    var phi_4968_: bool;
+    var phi_727_: u32;
+    var phi_730_: u32;
+    var phi_810_: array<f32, 3>;
+    var phi_821_: f32;
+    var phi_847_: u32;
+    var phi_860_: u32;
+    var phi_899_: type_29;
+    var phi_913_: f32;
+    var phi_942_: bool;
+    var phi_970_: f32;
+    var phi_971_: f32;
+    var phi_977_: f32;
+    var phi_979_: f32;
+    var phi_4958_: bool;
+    var phi_1094_: f32;
+    var phi_1097_: f32;
+    var phi_1108_: f32;
+    var phi_1111_: f32;
+    var phi_1135_: bool;
+    var phi_1171_: bool;
+    var phi_1507_: u32;
+    var phi_1510_: f32;
+    var phi_1512_: array<f32, 2>;
+    var phi_1508_: u32;
     var phi_1511_: f32;
-    var phi_4839_: bool;
-    var phi_1513_: f32;
-    var phi_1515_: u32;
-    var phi_1516_: u32;
-    var phi_1537_: bool;
-    var phi_4835_: bool;
-    var phi_1642_: u32;
-    var phi_1708_: bool;
-    var phi_1710_: bool;
-    var phi_1711_: bool;
-    var phi_1643_: u32;
-    var phi_4824_: bool;
-    var phi_1942_: u32;
-    var phi_1963_: bool;
-    var phi_1943_: u32;
-    var phi_4842_: bool;
-    var phi_4854_: bool;
-    var phi_1976_: u32;
-    var phi_2006_: u32;
-    var phi_2009_: u32;
+    var phi_1513_: array<f32, 2>;
+    var phi_1565_: f32;
+    var phi_1287_: f32;
+    var phi_1288_: f32;
+    var phi_1289_: bool;
+    var phi_1290_: f32;
+    var phi_1291_: bool;
+    var phi_1292_: f32;
+    var phi_1293_: bool;
+    var phi_1343_: f32;
+    var phi_1344_: f32;
+    var phi_1345_: bool;
+    var phi_1346_: f32;
+    var phi_1347_: bool;
+    var phi_1348_: f32;
+    var phi_1349_: bool;
+    var phi_1399_: f32;
+    var phi_1400_: f32;
+    var phi_1401_: bool;
+    var phi_1402_: f32;
+    var phi_1403_: bool;
+    var phi_1404_: f32;
+    var phi_1405_: bool;
+    var phi_1456_: f32;
+    var phi_1457_: f32;
+    var phi_1458_: bool;
+    var phi_1459_: f32;
+    var phi_1460_: bool;
+    var phi_1461_: f32;
+    var phi_1462_: bool;
+    var phi_1473_: f32;
+    var phi_1475_: f32;
+    var phi_1476_: bool;
+    var phi_1477_: f32;
+    var phi_1478_: bool;
+    var phi_1479_: f32;
+    var phi_1480_: bool;
+    var phi_1485_: f32;
+    var phi_1578_: f32;
+    var phi_1579_: f32;
+    var phi_1580_: f32;
+    var phi_1586_: u32;
+    var phi_1589_: f32;
+    var phi_1587_: u32;
+    var phi_1590_: f32;
+    var phi_1109_: f32;
+    var phi_1112_: f32;
+    var phi_4947_: bool;
+    var phi_5015_: bool;
+    var phi_1095_: f32;
+    var phi_1098_: f32;
+    var phi_5014_: bool;
+    var phi_1079_: f32;
+    var phi_5032_: bool;
+    var phi_1602_: f32;
+    var phi_5031_: bool;
+    var phi_1604_: f32;
+    var phi_1606_: u32;
+    var phi_1607_: u32;
+    var phi_1628_: bool;
+    var phi_5027_: bool;
+    var phi_1733_: u32;
+    var phi_1799_: bool;
+    var phi_1801_: bool;
+    var phi_1802_: bool;
+    var phi_1734_: u32;
+    var phi_5016_: bool;
     var phi_2033_: u32;
-    var phi_2007_: u32;
-    var phi_2010_: u32;
-    var phi_4850_: bool;
-    var phi_4857_: bool;
-    var phi_2035_: u32;
-    var phi_4856_: bool;
-    var phi_1977_: u32;
-    var phi_4855_: bool;
-    var phi_4863_: bool;
-    var phi_2066_: f32;
-    var phi_2069_: type_31;
-    var phi_2071_: u32;
-    var phi_2073_: u32;
-    var phi_2075_: f32;
-    var phi_2077_: f32;
-    var phi_2079_: bool;
-    var phi_2081_: array<f32, 3>;
-    var phi_3045_: bool;
-    var phi_3091_: bool;
-    var phi_3427_: u32;
-    var phi_3430_: f32;
-    var phi_3432_: array<f32, 2>;
-    var phi_3428_: u32;
-    var phi_3431_: f32;
-    var phi_3433_: array<f32, 2>;
-    var phi_3485_: f32;
-    var phi_3207_: f32;
-    var phi_3208_: f32;
-    var phi_3209_: bool;
-    var phi_3210_: f32;
-    var phi_3211_: bool;
-    var phi_3212_: f32;
-    var phi_3213_: bool;
-    var phi_3263_: f32;
-    var phi_3264_: f32;
-    var phi_3265_: bool;
-    var phi_3266_: f32;
-    var phi_3267_: bool;
-    var phi_3268_: f32;
-    var phi_3269_: bool;
-    var phi_3319_: f32;
-    var phi_3320_: f32;
-    var phi_3321_: bool;
-    var phi_3322_: f32;
-    var phi_3323_: bool;
-    var phi_3324_: f32;
-    var phi_3325_: bool;
-    var phi_3376_: f32;
-    var phi_3377_: f32;
-    var phi_3378_: bool;
-    var phi_3379_: f32;
-    var phi_3380_: bool;
-    var phi_3381_: f32;
-    var phi_3382_: bool;
-    var phi_3393_: f32;
-    var phi_3395_: f32;
-    var phi_3396_: bool;
-    var phi_3397_: f32;
-    var phi_3398_: bool;
-    var phi_3399_: f32;
-    var phi_3400_: bool;
-    var phi_3405_: f32;
-    var phi_3498_: f32;
-    var phi_3499_: f32;
-    var phi_3500_: f32;
-    var phi_2169_: u32;
-    var phi_2172_: f32;
-    var phi_2174_: u32;
-    var phi_2985_: f32;
-    var phi_2990_: f32;
-    var phi_3009_: f32;
-    var phi_3012_: f32;
-    var phi_3013_: u32;
-    var phi_3015_: u32;
-    var phi_3016_: f32;
-    var phi_3017_: u32;
-    var phi_2170_: u32;
-    var phi_2173_: f32;
-    var phi_2175_: u32;
-    var phi_3018_: bool;
-    var phi_4858_: bool;
-    var phi_3029_: f32;
-    var phi_4987_: bool;
-    var phi_3034_: f32;
-    var phi_4986_: bool;
-    var phi_3501_: f32;
-    var phi_3662_: f32;
-    var phi_3586_: f32;
-    var phi_3596_: type_18;
-    var phi_3597_: type_18;
-    var phi_3609_: f32;
-    var phi_3620_: type_18;
-    var phi_3672_: type_31;
-    var phi_3673_: type_18;
-    var phi_3758_: u32;
-    var phi_3759_: f32;
-    var phi_3760_: f32;
-    var phi_3761_: bool;
-    var phi_4966_: bool;
-    var phi_3762_: f32;
-    var phi_3763_: type_31;
-    var phi_3764_: u32;
-    var phi_3765_: f32;
-    var phi_3766_: f32;
-    var phi_3767_: bool;
-    var phi_3768_: array<f32, 3>;
-    var phi_4965_: bool;
-    var phi_2067_: f32;
-    var phi_2070_: type_31;
-    var phi_2072_: u32;
-    var phi_2074_: u32;
-    var phi_2076_: f32;
-    var phi_2078_: f32;
-    var phi_2080_: bool;
-    var phi_2082_: array<f32, 3>;
-    var phi_4964_: bool;
-    var phi_3772_: u32;
-    var phi_3773_: u32;
-    var phi_5040_: bool;
-    var phi_3793_: u32;
-    var phi_3794_: u32;
-    var phi_5043_: bool;
-    var phi_3814_: u32;
-    var phi_3815_: u32;
+    var phi_2054_: bool;
+    var phi_2034_: u32;
+    var phi_5034_: bool;
     var phi_5046_: bool;
-    var phi_3834_: u32;
-    var phi_3835_: u32;
+    var phi_2067_: u32;
+    var phi_2097_: u32;
+    var phi_2100_: u32;
+    var phi_2124_: u32;
+    var phi_2098_: u32;
+    var phi_2101_: u32;
+    var phi_5042_: bool;
     var phi_5049_: bool;
-    var phi_3855_: u32;
-    var phi_3856_: u32;
-    var phi_5052_: bool;
-    var phi_3911_: u32;
-    var phi_3960_: u32;
-    var phi_3969_: bool;
-    var phi_3970_: u32;
-    var phi_3971_: bool;
-    var phi_3972_: u32;
-    var phi_3912_: u32;
+    var phi_2126_: u32;
+    var phi_5048_: bool;
+    var phi_2068_: u32;
+    var phi_5047_: bool;
     var phi_5055_: bool;
-    var phi_4005_: u32;
-    var phi_4006_: u32;
-    var phi_5062_: bool;
-    var phi_5070_: bool;
-    var phi_4050_: u32;
+    var phi_2157_: f32;
+    var phi_2160_: type_31;
+    var phi_2162_: u32;
+    var phi_2164_: u32;
+    var phi_2166_: f32;
+    var phi_2168_: f32;
+    var phi_2170_: bool;
+    var phi_2172_: array<f32, 3>;
+    var phi_3136_: bool;
+    var phi_3182_: bool;
+    var phi_3518_: u32;
+    var phi_3521_: f32;
+    var phi_3523_: array<f32, 2>;
+    var phi_3519_: u32;
+    var phi_3522_: f32;
+    var phi_3524_: array<f32, 2>;
+    var phi_3576_: f32;
+    var phi_3298_: f32;
+    var phi_3299_: f32;
+    var phi_3300_: bool;
+    var phi_3301_: f32;
+    var phi_3302_: bool;
+    var phi_3303_: f32;
+    var phi_3304_: bool;
+    var phi_3354_: f32;
+    var phi_3355_: f32;
+    var phi_3356_: bool;
+    var phi_3357_: f32;
+    var phi_3358_: bool;
+    var phi_3359_: f32;
+    var phi_3360_: bool;
+    var phi_3410_: f32;
+    var phi_3411_: f32;
+    var phi_3412_: bool;
+    var phi_3413_: f32;
+    var phi_3414_: bool;
+    var phi_3415_: f32;
+    var phi_3416_: bool;
+    var phi_3467_: f32;
+    var phi_3468_: f32;
+    var phi_3469_: bool;
+    var phi_3470_: f32;
+    var phi_3471_: bool;
+    var phi_3472_: f32;
+    var phi_3473_: bool;
+    var phi_3484_: f32;
+    var phi_3486_: f32;
+    var phi_3487_: bool;
+    var phi_3488_: f32;
+    var phi_3489_: bool;
+    var phi_3490_: f32;
+    var phi_3491_: bool;
+    var phi_3496_: f32;
+    var phi_3589_: f32;
+    var phi_3590_: f32;
+    var phi_3591_: f32;
+    var phi_2260_: u32;
+    var phi_2263_: f32;
+    var phi_2265_: u32;
+    var phi_3076_: f32;
+    var phi_3081_: f32;
+    var phi_3100_: f32;
+    var phi_3103_: f32;
+    var phi_3104_: u32;
+    var phi_3106_: u32;
+    var phi_3107_: f32;
+    var phi_3108_: u32;
+    var phi_2261_: u32;
+    var phi_2264_: f32;
+    var phi_2266_: u32;
+    var phi_3109_: bool;
+    var phi_5050_: bool;
+    var phi_3120_: f32;
+    var phi_5179_: bool;
+    var phi_3125_: f32;
+    var phi_5178_: bool;
+    var phi_3592_: f32;
+    var phi_3753_: f32;
+    var phi_3677_: f32;
+    var phi_3687_: type_18;
+    var phi_3688_: type_18;
+    var phi_3700_: f32;
+    var phi_3711_: type_18;
+    var phi_3763_: type_31;
+    var phi_3764_: type_18;
+    var phi_3849_: u32;
+    var phi_3850_: f32;
+    var phi_3851_: f32;
+    var phi_3852_: bool;
+    var phi_5158_: bool;
+    var phi_3853_: f32;
+    var phi_3854_: type_31;
+    var phi_3855_: u32;
+    var phi_3856_: f32;
+    var phi_3857_: f32;
+    var phi_3858_: bool;
+    var phi_3859_: array<f32, 3>;
+    var phi_5157_: bool;
+    var phi_2158_: f32;
+    var phi_2161_: type_31;
+    var phi_2163_: u32;
+    var phi_2165_: u32;
+    var phi_2167_: f32;
+    var phi_2169_: f32;
+    var phi_2171_: bool;
+    var phi_2173_: array<f32, 3>;
+    var phi_5156_: bool;
+    var phi_3863_: u32;
+    var phi_3864_: u32;
+    var phi_5232_: bool;
+    var phi_3884_: u32;
+    var phi_3885_: u32;
+    var phi_5235_: bool;
+    var phi_3905_: u32;
+    var phi_3906_: u32;
+    var phi_5238_: bool;
+    var phi_3925_: u32;
+    var phi_3926_: u32;
+    var phi_5241_: bool;
+    var phi_3946_: u32;
+    var phi_3947_: u32;
+    var phi_5244_: bool;
+    var phi_4002_: u32;
     var phi_4051_: u32;
-    var phi_5069_: bool;
-    var phi_637_: u32;
-    var phi_640_: u32;
-    var phi_4053_: bool;
-    var phi_5068_: bool;
-    var phi_4114_: bool;
-    var phi_4116_: bool;
-    var phi_4117_: bool;
-    var phi_4274_: f32;
-    var phi_4339_: u32;
-    var phi_4342_: u32;
-    var phi_4344_: u32;
-    var phi_4417_: bool;
-    var phi_4419_: bool;
-    var phi_4420_: bool;
-    var phi_4435_: u32;
-    var phi_4436_: u32;
-    var phi_4437_: u32;
-    var phi_4438_: u32;
-    var phi_4340_: u32;
-    var phi_4343_: u32;
-    var phi_4345_: u32;
-    var phi_5071_: bool;
+    var phi_4060_: bool;
+    var phi_4061_: u32;
+    var phi_4062_: bool;
+    var phi_4063_: u32;
+    var phi_4003_: u32;
+    var phi_5247_: bool;
+    var phi_4182_: u32;
+    var phi_4183_: u32;
+    var phi_5254_: bool;
+    var phi_5280_: bool;
+    var phi_4232_: u32;
+    var phi_4233_: u32;
+    var phi_5279_: bool;
+    var phi_728_: u32;
+    var phi_731_: u32;
+    var phi_4235_: bool;
+    var phi_5278_: bool;
+    var phi_4296_: bool;
+    var phi_4298_: bool;
+    var phi_4299_: bool;
+    var phi_4456_: f32;
+    var phi_4521_: u32;
+    var phi_4524_: u32;
+    var phi_4526_: u32;
+    var phi_4599_: bool;
+    var phi_4601_: bool;
+    var phi_4602_: bool;
+    var phi_4617_: u32;
+    var phi_4618_: u32;
+    var phi_4619_: u32;
+    var phi_4620_: u32;
+    var phi_4522_: u32;
+    var phi_4525_: u32;
+    var phi_4527_: u32;
+    var phi_5283_: bool;
     var local_460: f32;
     var local_461: f32;
     var local_462: f32;
@@ -1020,7 +1020,7 @@ fn function_() {
                         let _e818 = local_3;
                         if (_e817 < _e818) {
                         } else {
-                            phi_4729_ = true;
+                            phi_4901_ = true;
                             break;
                         }
                         let _e820 = local_52;
@@ -1030,7 +1030,7 @@ fn function_() {
                         let _e826 = local_2;
                         if (_e825 < _e826) {
                         } else {
-                            phi_4729_ = true;
+                            phi_4901_ = true;
                             break;
                         }
                         let _e828 = local_53;
@@ -1056,11 +1056,11 @@ fn function_() {
                         let _e846 = local_51;
                         phi_362_ = _e843;
                         phi_365_ = _e845;
-                        phi_4729_ = false;
+                        phi_4901_ = false;
                         break if !(_e846);
                     }
                 }
-                let _e849 = phi_4729_;
+                let _e849 = phi_4901_;
                 if _e849 {
                     break;
                 }
@@ -1078,9 +1078,9 @@ fn function_() {
                 global_11[_e853] = _e855;
                 storageBarrier();
                 workgroupBarrier();
-                phi_408_ = 128u;
+                phi_494_ = 128u;
                 loop {
-                    let _e857 = phi_408_;
+                    let _e857 = phi_494_;
                     local_56 = _e857;
                     let _e858 = local_56;
                     let _e859 = (_e858 > 0u);
@@ -1092,7 +1092,7 @@ fn function_() {
                             let _e863 = local_55;
                             if _e863 {
                             } else {
-                                phi_4736_ = true;
+                                phi_4908_ = true;
                                 break;
                             }
                             let _e864 = global_11[_e853];
@@ -1103,7 +1103,7 @@ fn function_() {
                             local_59 = _e867;
                             if (_e867 < 5888u) {
                             } else {
-                                phi_4736_ = true;
+                                phi_4908_ = true;
                                 break;
                             }
                             let _e869 = local_59;
@@ -1114,7 +1114,7 @@ fn function_() {
                             let _e876 = local_55;
                             if _e876 {
                             } else {
-                                phi_4736_ = true;
+                                phi_4908_ = true;
                                 break;
                             }
                             let _e877 = local_443;
@@ -1123,20 +1123,20 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e878 = local_56;
-                        phi_409_ = (_e878 / 2u);
+                        phi_495_ = (_e878 / 2u);
                     } else {
-                        phi_409_ = u32();
+                        phi_495_ = u32();
                     }
-                    let _e881 = phi_409_;
+                    let _e881 = phi_495_;
                     continue;
                     continuing {
                         let _e882 = local_57;
-                        phi_408_ = _e881;
-                        phi_4736_ = _e849;
+                        phi_494_ = _e881;
+                        phi_4908_ = _e849;
                         break if !(_e882);
                     }
                 }
-                let _e885 = phi_4736_;
+                let _e885 = phi_4908_;
                 if _e885 {
                     break;
                 }
@@ -1144,9 +1144,9 @@ fn function_() {
                 local_60 = _e887;
                 storageBarrier();
                 workgroupBarrier();
-                phi_453_ = 0u;
+                phi_544_ = 0u;
                 loop {
-                    let _e889 = phi_453_;
+                    let _e889 = phi_544_;
                     local_61 = _e889;
                     let _e890 = local_61;
                     let _e891 = (_e890 <= 1280u);
@@ -1158,26 +1158,26 @@ fn function_() {
                         local_63 = _e894;
                         if (_e894 < 5888u) {
                         } else {
-                            phi_4741_ = true;
+                            phi_4931_ = true;
                             break;
                         }
                         let _e896 = local_63;
                         global_11[_e896] = 0u;
                         let _e898 = local_61;
-                        phi_454_ = (_e898 + 256u);
+                        phi_545_ = (_e898 + 256u);
                     } else {
-                        phi_454_ = u32();
+                        phi_545_ = u32();
                     }
-                    let _e901 = phi_454_;
+                    let _e901 = phi_545_;
                     continue;
                     continuing {
                         let _e902 = local_62;
-                        phi_453_ = _e901;
-                        phi_4741_ = _e885;
+                        phi_544_ = _e901;
+                        phi_4931_ = _e885;
                         break if !(_e902);
                     }
                 }
-                let _e905 = phi_4741_;
+                let _e905 = phi_4931_;
                 if _e905 {
                     break;
                 }
@@ -1212,20 +1212,20 @@ fn function_() {
                     if _e925 {
                         let _e926 = local_65;
                         let _e927 = local_14;
-                        phi_526_ = (_e926 < _e927);
+                        phi_617_ = (_e926 < _e927);
                     } else {
-                        phi_526_ = bool();
+                        phi_617_ = bool();
                     }
-                    let _e930 = phi_526_;
+                    let _e930 = phi_617_;
                     let _e931 = local_68;
-                    phi_528_ = _e930;
-                    phi_529_ = select(true, false, _e931);
+                    phi_619_ = _e930;
+                    phi_620_ = select(true, false, _e931);
                 } else {
-                    phi_528_ = bool();
-                    phi_529_ = true;
+                    phi_619_ = bool();
+                    phi_620_ = true;
                 }
-                let _e934 = phi_528_;
-                let _e936 = phi_529_;
+                let _e934 = phi_619_;
+                let _e936 = phi_620_;
                 if select(_e934, false, _e936) {
                     let _e938 = local_65;
                     let _e939 = local_13;
@@ -1259,11 +1259,11 @@ fn function_() {
                     }
                     let _e958 = local_70;
                     let _e961 = global_4.member[_e958];
-                    phi_574_ = bitcast<f32>(_e961);
+                    phi_665_ = bitcast<f32>(_e961);
                 } else {
-                    phi_574_ = _e564;
+                    phi_665_ = _e564;
                 }
-                let _e964 = phi_574_;
+                let _e964 = phi_665_;
                 local_71 = bitcast<u32>(_e964);
                 let _e966 = local;
                 let _e967 = (1024u + _e966);
@@ -1277,9 +1277,9 @@ fn function_() {
                 global_11[_e969] = _e971;
                 let _e972 = local;
                 local_73 = (4608u + _e972);
-                phi_585_ = 0u;
+                phi_676_ = 0u;
                 loop {
-                    let _e975 = phi_585_;
+                    let _e975 = phi_676_;
                     local_74 = _e975;
                     let _e976 = local_74;
                     let _e977 = (_e976 < 1u);
@@ -1291,7 +1291,7 @@ fn function_() {
                         local_76 = _e980;
                         if (_e980 < 5888u) {
                         } else {
-                            phi_4744_ = true;
+                            phi_4936_ = true;
                             break;
                         }
                         let _e982 = local_76;
@@ -1302,7 +1302,7 @@ fn function_() {
                         local_77 = _e987;
                         if (_e987 < 5888u) {
                         } else {
-                            phi_4744_ = true;
+                            phi_4936_ = true;
                             break;
                         }
                         let _e989 = local_77;
@@ -1313,7 +1313,7 @@ fn function_() {
                         local_78 = _e994;
                         if (_e994 < 5888u) {
                         } else {
-                            phi_4744_ = true;
+                            phi_4936_ = true;
                             break;
                         }
                         let _e996 = local_78;
@@ -1324,38 +1324,38 @@ fn function_() {
                         local_79 = _e1001;
                         if (_e1001 < 5888u) {
                         } else {
-                            phi_4744_ = true;
+                            phi_4936_ = true;
                             break;
                         }
                         let _e1003 = local_79;
                         global_11[_e1003] = 1u;
                         let _e1005 = local_74;
-                        phi_586_ = (_e1005 + 1u);
+                        phi_677_ = (_e1005 + 1u);
                     } else {
-                        phi_586_ = u32();
+                        phi_677_ = u32();
                     }
-                    let _e1008 = phi_586_;
+                    let _e1008 = phi_677_;
                     continue;
                     continuing {
                         let _e1009 = local_75;
-                        phi_585_ = _e1008;
-                        phi_4744_ = _e905;
+                        phi_676_ = _e1008;
+                        phi_4936_ = _e905;
                         break if !(_e1009);
                     }
                 }
-                let _e1012 = phi_4744_;
+                let _e1012 = phi_4936_;
                 if _e1012 {
                     break;
                 }
                 storageBarrier();
                 workgroupBarrier();
-                phi_4776_ = _e1012;
-                phi_636_ = 0u;
-                phi_639_ = 1u;
+                phi_4968_ = _e1012;
+                phi_727_ = 0u;
+                phi_730_ = 1u;
                 loop {
-                    let _e1014 = phi_4776_;
-                    let _e1016 = phi_636_;
-                    let _e1018 = phi_639_;
+                    let _e1014 = phi_4968_;
+                    let _e1016 = phi_727_;
+                    let _e1018 = phi_730_;
                     local_80 = _e1016;
                     local_81 = _e1018;
                     let _e1019 = local_80;
@@ -1365,9 +1365,9 @@ fn function_() {
                         let _e1023 = (_e1022 == 0u);
                         local_82 = _e1023;
                         if _e1023 {
-                            phi_5070_ = _e1014;
-                            phi_4050_ = u32();
-                            phi_4051_ = u32();
+                            phi_5280_ = _e1014;
+                            phi_4232_ = u32();
+                            phi_4233_ = u32();
                         } else {
                             let _e1024 = local_80;
                             let _e1025 = local;
@@ -1382,7 +1382,7 @@ fn function_() {
                                 let _e1032 = local_3;
                                 if (_e1031 < _e1032) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1034 = local_84;
@@ -1393,7 +1393,7 @@ fn function_() {
                                 let _e1039 = local_2;
                                 if (_e1038 < _e1039) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1041 = local_86;
@@ -1405,7 +1405,7 @@ fn function_() {
                                 let _e1047 = local_2;
                                 if (_e1046 < _e1047) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1049 = local_88;
@@ -1417,7 +1417,7 @@ fn function_() {
                                 let _e1055 = local_2;
                                 if (_e1054 < _e1055) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1057 = local_90;
@@ -1429,7 +1429,7 @@ fn function_() {
                                 let _e1063 = local_2;
                                 if (_e1062 < _e1063) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1065 = local_92;
@@ -1445,27 +1445,27 @@ fn function_() {
                                 let _e1079 = (_e1077 >> bitcast<u32>(24i));
                                 local_97 = _e1079;
                                 if (_e1079 == 0u) {
-                                    phi_719_ = array<f32, 3>(0f, 0f, 0f);
+                                    phi_810_ = array<f32, 3>(0f, 0f, 0f);
                                 } else {
                                     let _e1081 = local_97;
                                     let _e1087 = bitcast<f32>((bitcast<u32>((bitcast<i32>(_e1081) + -13i)) << bitcast<u32>(23i)));
                                     let _e1088 = local_94;
                                     let _e1091 = local_95;
                                     let _e1094 = local_96;
-                                    phi_719_ = array<f32, 3>((f32(_e1088) * _e1087), (f32(_e1091) * _e1087), (f32(_e1094) * _e1087));
+                                    phi_810_ = array<f32, 3>((f32(_e1088) * _e1087), (f32(_e1091) * _e1087), (f32(_e1094) * _e1087));
                                 }
-                                let _e1099 = phi_719_;
+                                let _e1099 = phi_810_;
                                 local_98 = _e1099;
                                 let _e1100 = local_89;
                                 let _e1103 = ((_e1100 >> bitcast<u32>(14u)) & 1023u);
                                 local_99 = _e1103;
                                 if (_e1103 >= 1023u) {
-                                    phi_730_ = 1f;
+                                    phi_821_ = 1f;
                                 } else {
                                     let _e1105 = local_99;
-                                    phi_730_ = (f32(_e1105) * 0.0009775171f);
+                                    phi_821_ = (f32(_e1105) * 0.0009775171f);
                                 }
-                                let _e1109 = phi_730_;
+                                let _e1109 = phi_821_;
                                 local_100 = _e1109;
                                 let _e1110 = local_91;
                                 let _e1111 = bitcast<f32>(_e1110);
@@ -1482,34 +1482,34 @@ fn function_() {
                                 let _e1127 = ((_e1124 >> bitcast<u32>(8u)) & 7u);
                                 local_104 = _e1127;
                                 if (_e1127 == 0u) {
-                                    phi_808_ = type_29(_e1121, _e1122, _e1109, _e1111, _e1115, 0u);
+                                    phi_899_ = type_29(_e1121, _e1122, _e1109, _e1111, _e1115, 0u);
                                 } else {
                                     let _e1129 = local_104;
                                     let _e1130 = local_104;
                                     let _e1131 = (_e1129 * _e1130);
                                     local_105 = _e1131;
                                     if (_e1131 <= 1u) {
-                                        phi_756_ = 1u;
+                                        phi_847_ = 1u;
                                     } else {
                                         let _e1133 = local_105;
-                                        phi_756_ = select(16u, 4u, (_e1133 <= 4u));
+                                        phi_847_ = select(16u, 4u, (_e1133 <= 4u));
                                     }
-                                    let _e1137 = phi_756_;
+                                    let _e1137 = phi_847_;
                                     local_106 = _e1137;
                                     if (_e1137 == 0u) {
-                                        phi_5068_ = true;
+                                        phi_5278_ = true;
                                         break;
                                     }
                                     let _e1139 = local_106;
                                     local_107 = (32u / _e1139);
                                     let _e1141 = local_106;
                                     if (_e1141 >= 32u) {
-                                        phi_769_ = 4294967295u;
+                                        phi_860_ = 4294967295u;
                                     } else {
                                         let _e1143 = local_106;
-                                        phi_769_ = ((1u << bitcast<u32>((_e1143 & 31u))) - 1u);
+                                        phi_860_ = ((1u << bitcast<u32>((_e1143 & 31u))) - 1u);
                                     }
-                                    let _e1149 = phi_769_;
+                                    let _e1149 = phi_860_;
                                     local_108 = _e1149;
                                     let _e1150 = local_18;
                                     let _e1151 = local_19;
@@ -1521,7 +1521,7 @@ fn function_() {
                                     let _e1161 = (_e1160 == 0u);
                                     local_110 = _e1161;
                                     if _e1161 {
-                                        phi_5068_ = true;
+                                        phi_5278_ = true;
                                         break;
                                     }
                                     let _e1162 = local_85;
@@ -1530,7 +1530,7 @@ fn function_() {
                                     local_111 = (_e1165 + (_e1162 / _e1163));
                                     let _e1167 = local_110;
                                     if _e1167 {
-                                        phi_5068_ = true;
+                                        phi_5278_ = true;
                                         break;
                                     }
                                     let _e1168 = local_85;
@@ -1541,7 +1541,7 @@ fn function_() {
                                     let _e1174 = local_2;
                                     if (_e1173 < _e1174) {
                                     } else {
-                                        phi_5068_ = true;
+                                        phi_5278_ = true;
                                         break;
                                     }
                                     let _e1176 = local_111;
@@ -1553,20 +1553,20 @@ fn function_() {
                                     let _e1188 = local_100;
                                     let _e1189 = local_101;
                                     let _e1190 = local_102;
-                                    phi_808_ = type_29(_e1186, _e1187, _e1188, _e1189, _e1190, ((_e1179 >> bitcast<u32>((_e1180 & 31u))) & _e1184));
+                                    phi_899_ = type_29(_e1186, _e1187, _e1188, _e1189, _e1190, ((_e1179 >> bitcast<u32>((_e1180 & 31u))) & _e1184));
                                 }
-                                let _e1193 = phi_808_;
+                                let _e1193 = phi_899_;
                                 local_113 = _e1193;
                                 local_114 = _e1193.member_5;
                                 let _e1195 = (_e1193.member_5 != 0u);
                                 local_115 = _e1195;
                                 if _e1195 {
-                                    phi_822_ = 1.4142135f;
+                                    phi_913_ = 1.4142135f;
                                 } else {
                                     let _e1196 = local_113;
-                                    phi_822_ = (0.5f * f32((1u << bitcast<u32>((_e1196.member_4 & 31u)))));
+                                    phi_913_ = (0.5f * f32((1u << bitcast<u32>((_e1196.member_4 & 31u)))));
                                 }
-                                let _e1204 = phi_822_;
+                                let _e1204 = phi_913_;
                                 local_116 = _e1204;
                                 let _e1205 = local_113;
                                 local_117 = _e1205.member_3;
@@ -1578,16 +1578,16 @@ fn function_() {
                                     let _e1246 = local_23;
                                     let _e1247 = local_21;
                                     let _e1250 = local_24;
-                                    phi_888_ = (0.5f * ((((2f * _e1242) * _e1244) / (_e1246 - _e1247)) * _e1250));
+                                    phi_979_ = (0.5f * ((((2f * _e1242) * _e1244) / (_e1246 - _e1247)) * _e1250));
                                 } else {
                                     let _e1209 = local_118;
                                     if (_e1209 == 0u) {
-                                        phi_851_ = false;
+                                        phi_942_ = false;
                                     } else {
                                         let _e1211 = local_118;
-                                        phi_851_ = (_e1211 <= 2139095040u);
+                                        phi_942_ = (_e1211 <= 2139095040u);
                                     }
-                                    let _e1214 = phi_851_;
+                                    let _e1214 = phi_942_;
                                     if _e1214 {
                                         let _e1215 = local_22;
                                         let _e1217 = local_21;
@@ -1597,30 +1597,30 @@ fn function_() {
                                         let _e1224 = ((((2f * _e1215) * _e1217) / (_e1219 - _e1220)) * _e1223);
                                         local_119 = _e1224;
                                         if (_e1224 == 0f) {
-                                            phi_879_ = 0f;
+                                            phi_970_ = 0f;
                                         } else {
                                             let _e1226 = local_23;
                                             let _e1227 = local_117;
                                             let _e1230 = local_119;
-                                            phi_879_ = (_e1230 * (1f - (_e1226 / _e1227)));
+                                            phi_970_ = (_e1230 * (1f - (_e1226 / _e1227)));
                                         }
-                                        let _e1233 = phi_879_;
-                                        phi_880_ = _e1233;
+                                        let _e1233 = phi_970_;
+                                        phi_971_ = _e1233;
                                     } else {
-                                        phi_880_ = _e564;
+                                        phi_971_ = _e564;
                                     }
-                                    let _e1235 = phi_880_;
+                                    let _e1235 = phi_971_;
                                     local_120 = _e1235;
                                     if (_e1235 < 0f) {
                                         let _e1237 = local_120;
-                                        phi_886_ = -(_e1237);
+                                        phi_977_ = -(_e1237);
                                     } else {
-                                        phi_886_ = _e1235;
+                                        phi_977_ = _e1235;
                                     }
-                                    let _e1240 = phi_886_;
-                                    phi_888_ = (0.5f * _e1240);
+                                    let _e1240 = phi_977_;
+                                    phi_979_ = (0.5f * _e1240);
                                 }
-                                let _e1254 = phi_888_;
+                                let _e1254 = phi_979_;
                                 let _e1259 = local_116;
                                 let _e1260 = (select(_e1254, 0f, ((bitcast<u32>(_e1254) & 2147483647u) > 2139095040u)) + _e1259);
                                 let _e1261 = local_12;
@@ -1638,7 +1638,7 @@ fn function_() {
                                 local_124 = _e1279;
                                 if (_e1279 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1281 = local_124;
@@ -1651,7 +1651,7 @@ fn function_() {
                                 local_126 = _e1287;
                                 if (_e1287 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1289 = local_126;
@@ -1664,7 +1664,7 @@ fn function_() {
                                 local_128 = _e1295;
                                 if (_e1295 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1297 = local_128;
@@ -1675,8 +1675,8 @@ fn function_() {
                                 local_445 = select(1f, -1f, (_e1300 < _e1301));
                                 let _e1304 = local_115;
                                 if _e1304 {
-                                    phi_4839_ = _e1014;
-                                    phi_1513_ = 1f;
+                                    phi_5031_ = _e1014;
+                                    phi_1604_ = 1f;
                                 } else {
                                     let _e1305 = local_113;
                                     local_129 = f32((1u << bitcast<u32>(((2u * _e1305.member_4) & 31u))));
@@ -1690,7 +1690,7 @@ fn function_() {
                                             let _e1860 = local_444;
                                             let _e1861 = (_e1860 - (0.5f * _e1858));
                                             let _e1862 = local_31;
-                                            phi_988_ = ((_e1862 * _e1861) * _e1861);
+                                            phi_1079_ = ((_e1862 * _e1861) * _e1861);
                                         } else {
                                             let _e1846 = local_444;
                                             let _e1847 = local_130;
@@ -1698,11 +1698,11 @@ fn function_() {
                                             let _e1851 = local_130;
                                             let _e1852 = local_130;
                                             let _e1856 = local_31;
-                                            phi_988_ = (_e1856 * (((_e1846 - _e1847) * _e1849) + ((_e1851 * _e1852) * 0.33333334f)));
+                                            phi_1079_ = (_e1856 * (((_e1846 - _e1847) * _e1849) + ((_e1851 * _e1852) * 0.33333334f)));
                                         }
-                                        let _e1866 = phi_988_;
-                                        phi_4840_ = _e1014;
-                                        phi_1511_ = _e1866;
+                                        let _e1866 = phi_1079_;
+                                        phi_5032_ = _e1014;
+                                        phi_1602_ = _e1866;
                                     } else {
                                         let _e1319 = local_122;
                                         let _e1320 = local_444;
@@ -1714,13 +1714,13 @@ fn function_() {
                                         let _e1334 = local_121;
                                         let _e1335 = local_444;
                                         local_132 = floor(((_e1334 + _e1335) - 0.5f));
-                                        phi_4766_ = _e1014;
-                                        phi_1003_ = ceil(((_e1319 - _e1320) - 0.5f));
-                                        phi_1006_ = 0f;
+                                        phi_4958_ = _e1014;
+                                        phi_1094_ = ceil(((_e1319 - _e1320) - 0.5f));
+                                        phi_1097_ = 0f;
                                         loop {
-                                            let _e1340 = phi_4766_;
-                                            let _e1342 = phi_1003_;
-                                            let _e1344 = phi_1006_;
+                                            let _e1340 = phi_4958_;
+                                            let _e1342 = phi_1094_;
+                                            let _e1344 = phi_1097_;
                                             local_133 = _e1342;
                                             local_462 = _e1344;
                                             let _e1345 = local_133;
@@ -1731,11 +1731,11 @@ fn function_() {
                                                 let _e1348 = local_133;
                                                 let _e1350 = local_122;
                                                 local_135 = ((_e1348 + 0.5f) - _e1350);
-                                                phi_1017_ = ceil(((_e1329 - _e1330) - 0.5f));
-                                                phi_1020_ = _e1344;
+                                                phi_1108_ = ceil(((_e1329 - _e1330) - 0.5f));
+                                                phi_1111_ = _e1344;
                                                 loop {
-                                                    let _e1353 = phi_1017_;
-                                                    let _e1355 = phi_1020_;
+                                                    let _e1353 = phi_1108_;
+                                                    let _e1355 = phi_1111_;
                                                     local_136 = _e1353;
                                                     local_461 = _e1355;
                                                     let _e1356 = local_136;
@@ -1755,11 +1755,11 @@ fn function_() {
                                                         local_140 = _e1369;
                                                         if _e1369 {
                                                             let _e1370 = local_32;
-                                                            phi_1044_ = (_e1370 == 0u);
+                                                            phi_1135_ = (_e1370 == 0u);
                                                         } else {
-                                                            phi_1044_ = false;
+                                                            phi_1135_ = false;
                                                         }
-                                                        let _e1373 = phi_1044_;
+                                                        let _e1373 = phi_1135_;
                                                         if _e1373 {
                                                             let _e1781 = local_444;
                                                             let _e1782 = local_130;
@@ -1769,16 +1769,16 @@ fn function_() {
                                                             let _e1791 = local_444;
                                                             let _e1793 = local_130;
                                                             let _e1795 = ((_e1791 - sqrt(_e1789)) * (1f / _e1793));
-                                                            phi_1489_ = select(select(0f, select(1f, _e1795, (_e1795 < 1f)), (0f < _e1795)), 1f, ((0f < _e1783) && (_e1786 <= (_e1783 * _e1783))));
+                                                            phi_1580_ = select(select(0f, select(1f, _e1795, (_e1795 < 1f)), (0f < _e1795)), 1f, ((0f < _e1783) && (_e1786 <= (_e1783 * _e1783))));
                                                         } else {
                                                             let _e1374 = local_140;
                                                             if _e1374 {
                                                                 let _e1375 = local_32;
-                                                                phi_1080_ = (_e1375 == 0u);
+                                                                phi_1171_ = (_e1375 == 0u);
                                                             } else {
-                                                                phi_1080_ = false;
+                                                                phi_1171_ = false;
                                                             }
-                                                            let _e1378 = phi_1080_;
+                                                            let _e1378 = phi_1171_;
                                                             if _e1378 {
                                                                 let _e1759 = local_444;
                                                                 let _e1760 = local_130;
@@ -1788,7 +1788,7 @@ fn function_() {
                                                                 let _e1769 = local_444;
                                                                 let _e1771 = local_130;
                                                                 let _e1773 = ((_e1769 - sqrt(_e1767)) * (1f / _e1771));
-                                                                phi_1488_ = select(select(0f, select(1f, _e1773, (_e1773 < 1f)), (0f < _e1773)), 1f, ((0f < _e1761) && (_e1764 <= (_e1761 * _e1761))));
+                                                                phi_1579_ = select(select(0f, select(1f, _e1773, (_e1773 < 1f)), (0f < _e1773)), 1f, ((0f < _e1761) && (_e1764 <= (_e1761 * _e1761))));
                                                             } else {
                                                                 let _e1379 = local_445;
                                                                 let _e1380 = local_138;
@@ -1837,25 +1837,25 @@ fn function_() {
                                                                                         let _e1506 = (_e1499 < 0f);
                                                                                         local_152 = _e1506;
                                                                                         if _e1506 {
-                                                                                            phi_1201_ = f32();
-                                                                                            phi_1202_ = true;
+                                                                                            phi_1292_ = f32();
+                                                                                            phi_1293_ = true;
                                                                                         } else {
                                                                                             let _e1507 = local_149;
                                                                                             if (_e1507 < 0f) {
-                                                                                                phi_1199_ = f32();
-                                                                                                phi_1200_ = true;
+                                                                                                phi_1290_ = f32();
+                                                                                                phi_1291_ = true;
                                                                                             } else {
                                                                                                 let _e1509 = local_148;
                                                                                                 let _e1510 = local_144;
                                                                                                 if (_e1509 >= _e1510) {
-                                                                                                    phi_1197_ = f32();
-                                                                                                    phi_1198_ = true;
+                                                                                                    phi_1288_ = f32();
+                                                                                                    phi_1289_ = true;
                                                                                                 } else {
                                                                                                     let _e1512 = local_149;
                                                                                                     let _e1513 = local_144;
                                                                                                     let _e1514 = (_e1512 >= _e1513);
                                                                                                     if _e1514 {
-                                                                                                        phi_1196_ = f32();
+                                                                                                        phi_1287_ = f32();
                                                                                                     } else {
                                                                                                         let _e1515 = local_149;
                                                                                                         let _e1517 = local_149;
@@ -1869,29 +1869,29 @@ fn function_() {
                                                                                                         let _e1536 = local_8;
                                                                                                         if (_e1535 < _e1536) {
                                                                                                         } else {
-                                                                                                            phi_4755_ = true;
+                                                                                                            phi_4947_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1538 = local_153;
                                                                                                         let _e1541 = global_10.member[_e1538];
-                                                                                                        phi_1196_ = bitcast<f32>(_e1541);
+                                                                                                        phi_1287_ = bitcast<f32>(_e1541);
                                                                                                     }
-                                                                                                    let _e1544 = phi_1196_;
-                                                                                                    phi_1197_ = _e1544;
-                                                                                                    phi_1198_ = _e1514;
+                                                                                                    let _e1544 = phi_1287_;
+                                                                                                    phi_1288_ = _e1544;
+                                                                                                    phi_1289_ = _e1514;
                                                                                                 }
-                                                                                                let _e1546 = phi_1197_;
-                                                                                                let _e1548 = phi_1198_;
-                                                                                                phi_1199_ = _e1546;
-                                                                                                phi_1200_ = _e1548;
+                                                                                                let _e1546 = phi_1288_;
+                                                                                                let _e1548 = phi_1289_;
+                                                                                                phi_1290_ = _e1546;
+                                                                                                phi_1291_ = _e1548;
                                                                                             }
-                                                                                            let _e1550 = phi_1199_;
-                                                                                            let _e1552 = phi_1200_;
-                                                                                            phi_1201_ = _e1550;
-                                                                                            phi_1202_ = _e1552;
+                                                                                            let _e1550 = phi_1290_;
+                                                                                            let _e1552 = phi_1291_;
+                                                                                            phi_1292_ = _e1550;
+                                                                                            phi_1293_ = _e1552;
                                                                                         }
-                                                                                        let _e1554 = phi_1201_;
-                                                                                        let _e1556 = phi_1202_;
+                                                                                        let _e1554 = phi_1292_;
+                                                                                        let _e1556 = phi_1293_;
                                                                                         let _e1558 = local_150;
                                                                                         let _e1559 = (1f - _e1558);
                                                                                         local_154 = _e1559;
@@ -1902,25 +1902,25 @@ fn function_() {
                                                                                         let _e1563 = (_e1562 < 0f);
                                                                                         local_157 = _e1563;
                                                                                         if _e1563 {
-                                                                                            phi_1257_ = f32();
-                                                                                            phi_1258_ = true;
+                                                                                            phi_1348_ = f32();
+                                                                                            phi_1349_ = true;
                                                                                         } else {
                                                                                             let _e1564 = local_149;
                                                                                             if (_e1564 < 0f) {
-                                                                                                phi_1255_ = f32();
-                                                                                                phi_1256_ = true;
+                                                                                                phi_1346_ = f32();
+                                                                                                phi_1347_ = true;
                                                                                             } else {
                                                                                                 let _e1566 = local_156;
                                                                                                 let _e1567 = local_144;
                                                                                                 if (_e1566 >= _e1567) {
-                                                                                                    phi_1253_ = f32();
-                                                                                                    phi_1254_ = true;
+                                                                                                    phi_1344_ = f32();
+                                                                                                    phi_1345_ = true;
                                                                                                 } else {
                                                                                                     let _e1569 = local_149;
                                                                                                     let _e1570 = local_144;
                                                                                                     let _e1571 = (_e1569 >= _e1570);
                                                                                                     if _e1571 {
-                                                                                                        phi_1252_ = f32();
+                                                                                                        phi_1343_ = f32();
                                                                                                     } else {
                                                                                                         let _e1572 = local_149;
                                                                                                         let _e1574 = local_149;
@@ -1934,29 +1934,29 @@ fn function_() {
                                                                                                         let _e1593 = local_8;
                                                                                                         if (_e1592 < _e1593) {
                                                                                                         } else {
-                                                                                                            phi_4755_ = true;
+                                                                                                            phi_4947_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1595 = local_158;
                                                                                                         let _e1598 = global_10.member[_e1595];
-                                                                                                        phi_1252_ = bitcast<f32>(_e1598);
+                                                                                                        phi_1343_ = bitcast<f32>(_e1598);
                                                                                                     }
-                                                                                                    let _e1601 = phi_1252_;
-                                                                                                    phi_1253_ = _e1601;
-                                                                                                    phi_1254_ = _e1571;
+                                                                                                    let _e1601 = phi_1343_;
+                                                                                                    phi_1344_ = _e1601;
+                                                                                                    phi_1345_ = _e1571;
                                                                                                 }
-                                                                                                let _e1603 = phi_1253_;
-                                                                                                let _e1605 = phi_1254_;
-                                                                                                phi_1255_ = _e1603;
-                                                                                                phi_1256_ = _e1605;
+                                                                                                let _e1603 = phi_1344_;
+                                                                                                let _e1605 = phi_1345_;
+                                                                                                phi_1346_ = _e1603;
+                                                                                                phi_1347_ = _e1605;
                                                                                             }
-                                                                                            let _e1607 = phi_1255_;
-                                                                                            let _e1609 = phi_1256_;
-                                                                                            phi_1257_ = _e1607;
-                                                                                            phi_1258_ = _e1609;
+                                                                                            let _e1607 = phi_1346_;
+                                                                                            let _e1609 = phi_1347_;
+                                                                                            phi_1348_ = _e1607;
+                                                                                            phi_1349_ = _e1609;
                                                                                         }
-                                                                                        let _e1611 = phi_1257_;
-                                                                                        let _e1613 = phi_1258_;
+                                                                                        let _e1611 = phi_1348_;
+                                                                                        let _e1613 = phi_1349_;
                                                                                         let _e1615 = local_150;
                                                                                         let _e1617 = local_155;
                                                                                         local_159 = (_e1617 + (select(_e1611, 0f, _e1613) * _e1615));
@@ -1964,25 +1964,25 @@ fn function_() {
                                                                                         local_160 = (_e1619 + 1f);
                                                                                         let _e1621 = local_152;
                                                                                         if _e1621 {
-                                                                                            phi_1313_ = f32();
-                                                                                            phi_1314_ = true;
+                                                                                            phi_1404_ = f32();
+                                                                                            phi_1405_ = true;
                                                                                         } else {
                                                                                             let _e1622 = local_160;
                                                                                             if (_e1622 < 0f) {
-                                                                                                phi_1311_ = f32();
-                                                                                                phi_1312_ = true;
+                                                                                                phi_1402_ = f32();
+                                                                                                phi_1403_ = true;
                                                                                             } else {
                                                                                                 let _e1624 = local_148;
                                                                                                 let _e1625 = local_144;
                                                                                                 if (_e1624 >= _e1625) {
-                                                                                                    phi_1309_ = f32();
-                                                                                                    phi_1310_ = true;
+                                                                                                    phi_1400_ = f32();
+                                                                                                    phi_1401_ = true;
                                                                                                 } else {
                                                                                                     let _e1627 = local_160;
                                                                                                     let _e1628 = local_144;
                                                                                                     let _e1629 = (_e1627 >= _e1628);
                                                                                                     if _e1629 {
-                                                                                                        phi_1308_ = f32();
+                                                                                                        phi_1399_ = f32();
                                                                                                     } else {
                                                                                                         let _e1630 = local_160;
                                                                                                         let _e1632 = local_160;
@@ -1996,52 +1996,52 @@ fn function_() {
                                                                                                         let _e1651 = local_8;
                                                                                                         if (_e1650 < _e1651) {
                                                                                                         } else {
-                                                                                                            phi_4755_ = true;
+                                                                                                            phi_4947_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1653 = local_161;
                                                                                                         let _e1656 = global_10.member[_e1653];
-                                                                                                        phi_1308_ = bitcast<f32>(_e1656);
+                                                                                                        phi_1399_ = bitcast<f32>(_e1656);
                                                                                                     }
-                                                                                                    let _e1659 = phi_1308_;
-                                                                                                    phi_1309_ = _e1659;
-                                                                                                    phi_1310_ = _e1629;
+                                                                                                    let _e1659 = phi_1399_;
+                                                                                                    phi_1400_ = _e1659;
+                                                                                                    phi_1401_ = _e1629;
                                                                                                 }
-                                                                                                let _e1661 = phi_1309_;
-                                                                                                let _e1663 = phi_1310_;
-                                                                                                phi_1311_ = _e1661;
-                                                                                                phi_1312_ = _e1663;
+                                                                                                let _e1661 = phi_1400_;
+                                                                                                let _e1663 = phi_1401_;
+                                                                                                phi_1402_ = _e1661;
+                                                                                                phi_1403_ = _e1663;
                                                                                             }
-                                                                                            let _e1665 = phi_1311_;
-                                                                                            let _e1667 = phi_1312_;
-                                                                                            phi_1313_ = _e1665;
-                                                                                            phi_1314_ = _e1667;
+                                                                                            let _e1665 = phi_1402_;
+                                                                                            let _e1667 = phi_1403_;
+                                                                                            phi_1404_ = _e1665;
+                                                                                            phi_1405_ = _e1667;
                                                                                         }
-                                                                                        let _e1669 = phi_1313_;
-                                                                                        let _e1671 = phi_1314_;
+                                                                                        let _e1669 = phi_1404_;
+                                                                                        let _e1671 = phi_1405_;
                                                                                         let _e1673 = local_154;
                                                                                         local_162 = (select(_e1669, 0f, _e1671) * _e1673);
                                                                                         let _e1675 = local_157;
                                                                                         if _e1675 {
-                                                                                            phi_1370_ = f32();
-                                                                                            phi_1371_ = true;
+                                                                                            phi_1461_ = f32();
+                                                                                            phi_1462_ = true;
                                                                                         } else {
                                                                                             let _e1676 = local_160;
                                                                                             if (_e1676 < 0f) {
-                                                                                                phi_1368_ = f32();
-                                                                                                phi_1369_ = true;
+                                                                                                phi_1459_ = f32();
+                                                                                                phi_1460_ = true;
                                                                                             } else {
                                                                                                 let _e1678 = local_156;
                                                                                                 let _e1679 = local_144;
                                                                                                 if (_e1678 >= _e1679) {
-                                                                                                    phi_1366_ = f32();
-                                                                                                    phi_1367_ = true;
+                                                                                                    phi_1457_ = f32();
+                                                                                                    phi_1458_ = true;
                                                                                                 } else {
                                                                                                     let _e1681 = local_160;
                                                                                                     let _e1682 = local_144;
                                                                                                     let _e1683 = (_e1681 >= _e1682);
                                                                                                     if _e1683 {
-                                                                                                        phi_1365_ = f32();
+                                                                                                        phi_1456_ = f32();
                                                                                                     } else {
                                                                                                         let _e1684 = local_160;
                                                                                                         let _e1686 = local_160;
@@ -2055,70 +2055,70 @@ fn function_() {
                                                                                                         let _e1705 = local_8;
                                                                                                         if (_e1704 < _e1705) {
                                                                                                         } else {
-                                                                                                            phi_4755_ = true;
+                                                                                                            phi_4947_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1707 = local_163;
                                                                                                         let _e1710 = global_10.member[_e1707];
-                                                                                                        phi_1365_ = bitcast<f32>(_e1710);
+                                                                                                        phi_1456_ = bitcast<f32>(_e1710);
                                                                                                     }
-                                                                                                    let _e1713 = phi_1365_;
-                                                                                                    phi_1366_ = _e1713;
-                                                                                                    phi_1367_ = _e1683;
+                                                                                                    let _e1713 = phi_1456_;
+                                                                                                    phi_1457_ = _e1713;
+                                                                                                    phi_1458_ = _e1683;
                                                                                                 }
-                                                                                                let _e1715 = phi_1366_;
-                                                                                                let _e1717 = phi_1367_;
-                                                                                                phi_1368_ = _e1715;
-                                                                                                phi_1369_ = _e1717;
+                                                                                                let _e1715 = phi_1457_;
+                                                                                                let _e1717 = phi_1458_;
+                                                                                                phi_1459_ = _e1715;
+                                                                                                phi_1460_ = _e1717;
                                                                                             }
-                                                                                            let _e1719 = phi_1368_;
-                                                                                            let _e1721 = phi_1369_;
-                                                                                            phi_1370_ = _e1719;
-                                                                                            phi_1371_ = _e1721;
+                                                                                            let _e1719 = phi_1459_;
+                                                                                            let _e1721 = phi_1460_;
+                                                                                            phi_1461_ = _e1719;
+                                                                                            phi_1462_ = _e1721;
                                                                                         }
-                                                                                        let _e1723 = phi_1370_;
-                                                                                        let _e1725 = phi_1371_;
+                                                                                        let _e1723 = phi_1461_;
+                                                                                        let _e1725 = phi_1462_;
                                                                                         let _e1727 = local_150;
                                                                                         let _e1729 = local_162;
                                                                                         let _e1731 = local_151;
                                                                                         let _e1733 = local_159;
                                                                                         let _e1735 = local_151;
-                                                                                        phi_1382_ = ((_e1733 * (1f - _e1731)) + ((_e1729 + (select(_e1723, 0f, _e1725) * _e1727)) * _e1735));
+                                                                                        phi_1473_ = ((_e1733 * (1f - _e1731)) + ((_e1729 + (select(_e1723, 0f, _e1725) * _e1727)) * _e1735));
                                                                                     } else {
-                                                                                        phi_1382_ = f32();
+                                                                                        phi_1473_ = f32();
                                                                                     }
-                                                                                    let _e1739 = phi_1382_;
+                                                                                    let _e1739 = phi_1473_;
                                                                                     let _e1740 = local_147;
-                                                                                    phi_1384_ = _e1739;
-                                                                                    phi_1385_ = select(true, false, _e1740);
+                                                                                    phi_1475_ = _e1739;
+                                                                                    phi_1476_ = select(true, false, _e1740);
                                                                                 } else {
-                                                                                    phi_1384_ = f32();
-                                                                                    phi_1385_ = true;
+                                                                                    phi_1475_ = f32();
+                                                                                    phi_1476_ = true;
                                                                                 }
-                                                                                let _e1743 = phi_1384_;
-                                                                                let _e1745 = phi_1385_;
-                                                                                phi_1386_ = _e1743;
-                                                                                phi_1387_ = _e1745;
+                                                                                let _e1743 = phi_1475_;
+                                                                                let _e1745 = phi_1476_;
+                                                                                phi_1477_ = _e1743;
+                                                                                phi_1478_ = _e1745;
                                                                             } else {
-                                                                                phi_1386_ = f32();
-                                                                                phi_1387_ = true;
+                                                                                phi_1477_ = f32();
+                                                                                phi_1478_ = true;
                                                                             }
-                                                                            let _e1747 = phi_1386_;
-                                                                            let _e1749 = phi_1387_;
-                                                                            phi_1388_ = _e1747;
-                                                                            phi_1389_ = _e1749;
+                                                                            let _e1747 = phi_1477_;
+                                                                            let _e1749 = phi_1478_;
+                                                                            phi_1479_ = _e1747;
+                                                                            phi_1480_ = _e1749;
                                                                         } else {
-                                                                            phi_1388_ = f32();
-                                                                            phi_1389_ = true;
+                                                                            phi_1479_ = f32();
+                                                                            phi_1480_ = true;
                                                                         }
-                                                                        let _e1751 = phi_1388_;
-                                                                        let _e1753 = phi_1389_;
-                                                                        phi_1394_ = select(_e1751, 0f, _e1753);
+                                                                        let _e1751 = phi_1479_;
+                                                                        let _e1753 = phi_1480_;
+                                                                        phi_1485_ = select(_e1751, 0f, _e1753);
                                                                     } else {
-                                                                        phi_1394_ = 0f;
+                                                                        phi_1485_ = 0f;
                                                                     }
-                                                                    let _e1756 = phi_1394_;
-                                                                    phi_1487_ = _e1756;
+                                                                    let _e1756 = phi_1485_;
+                                                                    phi_1578_ = _e1756;
                                                                 } else {
                                                                     let _e1387 = local_141;
                                                                     let _e1388 = local_141;
@@ -2128,19 +2128,19 @@ fn function_() {
                                                                     local_164 = _e1394;
                                                                     let _e1395 = local_140;
                                                                     if _e1395 {
-                                                                        phi_1474_ = _e1394;
+                                                                        phi_1565_ = _e1394;
                                                                     } else {
                                                                         let _e1396 = local_27;
                                                                         let _e1398 = local_141;
                                                                         let _e1400 = local_27;
                                                                         let _e1402 = local_142;
-                                                                        phi_1416_ = 1u;
-                                                                        phi_1419_ = ((_e1398 * _e1396[0]) + (_e1402 * _e1400[1]));
-                                                                        phi_1421_ = _e617.member_16.member_2;
+                                                                        phi_1507_ = 1u;
+                                                                        phi_1510_ = ((_e1398 * _e1396[0]) + (_e1402 * _e1400[1]));
+                                                                        phi_1512_ = _e617.member_16.member_2;
                                                                         loop {
-                                                                            let _e1406 = phi_1416_;
-                                                                            let _e1408 = phi_1419_;
-                                                                            let _e1410 = phi_1421_;
+                                                                            let _e1406 = phi_1507_;
+                                                                            let _e1408 = phi_1510_;
+                                                                            let _e1410 = phi_1512_;
                                                                             local_165 = _e1406;
                                                                             local_166 = _e1408;
                                                                             local_167 = _e1410;
@@ -2163,23 +2163,23 @@ fn function_() {
                                                                                 let _e1434 = local_166;
                                                                                 let _e1436 = local_166;
                                                                                 let _e1438 = local_165;
-                                                                                phi_1417_ = (_e1438 + 1u);
-                                                                                phi_1420_ = select(_e1436, _e1433, (_e1433 > _e1434));
-                                                                                phi_1422_ = array<f32, 2>(_e1422, _e1427);
+                                                                                phi_1508_ = (_e1438 + 1u);
+                                                                                phi_1511_ = select(_e1436, _e1433, (_e1433 > _e1434));
+                                                                                phi_1513_ = array<f32, 2>(_e1422, _e1427);
                                                                             } else {
-                                                                                phi_1417_ = u32();
-                                                                                phi_1420_ = f32();
-                                                                                phi_1422_ = array<f32, 2>();
+                                                                                phi_1508_ = u32();
+                                                                                phi_1511_ = f32();
+                                                                                phi_1513_ = array<f32, 2>();
                                                                             }
-                                                                            let _e1441 = phi_1417_;
-                                                                            let _e1443 = phi_1420_;
-                                                                            let _e1445 = phi_1422_;
+                                                                            let _e1441 = phi_1508_;
+                                                                            let _e1443 = phi_1511_;
+                                                                            let _e1445 = phi_1513_;
                                                                             continue;
                                                                             continuing {
                                                                                 let _e1446 = local_168;
-                                                                                phi_1416_ = _e1441;
-                                                                                phi_1419_ = _e1443;
-                                                                                phi_1421_ = _e1445;
+                                                                                phi_1507_ = _e1441;
+                                                                                phi_1510_ = _e1443;
+                                                                                phi_1512_ = _e1445;
                                                                                 break if !(_e1446);
                                                                             }
                                                                         }
@@ -2188,28 +2188,28 @@ fn function_() {
                                                                         let _e1452 = local_30;
                                                                         let _e1454 = local_26;
                                                                         let _e1455 = local_164;
-                                                                        phi_1474_ = ((((1f - _e1448) * _e1450) * _e1452) + (_e1454 * _e1455));
+                                                                        phi_1565_ = ((((1f - _e1448) * _e1450) * _e1452) + (_e1454 * _e1455));
                                                                     }
-                                                                    let _e1459 = phi_1474_;
+                                                                    let _e1459 = phi_1565_;
                                                                     let _e1460 = local_444;
                                                                     let _e1462 = local_130;
                                                                     let _e1463 = ((_e1460 - _e1459) / _e1462);
-                                                                    phi_1487_ = select(0f, select(1f, _e1463, (_e1463 < 1f)), (0f < _e1463));
+                                                                    phi_1578_ = select(0f, select(1f, _e1463, (_e1463 < 1f)), (0f < _e1463));
                                                                 }
-                                                                let _e1758 = phi_1487_;
-                                                                phi_1488_ = _e1758;
+                                                                let _e1758 = phi_1578_;
+                                                                phi_1579_ = _e1758;
                                                             }
-                                                            let _e1780 = phi_1488_;
-                                                            phi_1489_ = _e1780;
+                                                            let _e1780 = phi_1579_;
+                                                            phi_1580_ = _e1780;
                                                         }
-                                                        let _e1802 = phi_1489_;
+                                                        let _e1802 = phi_1580_;
                                                         let _e1803 = local_137;
                                                         local_446 = select(0f, _e1802, _e1803);
-                                                        phi_1495_ = 0u;
-                                                        phi_1498_ = _e1355;
+                                                        phi_1586_ = 0u;
+                                                        phi_1589_ = _e1355;
                                                         loop {
-                                                            let _e1806 = phi_1495_;
-                                                            let _e1808 = phi_1498_;
+                                                            let _e1806 = phi_1586_;
+                                                            let _e1808 = phi_1589_;
                                                             local_169 = _e1806;
                                                             local_170 = _e1808;
                                                             local_460 = _e1808;
@@ -2220,90 +2220,90 @@ fn function_() {
                                                                 let _e1811 = local_170;
                                                                 let _e1812 = local_446;
                                                                 let _e1814 = local_169;
-                                                                phi_1496_ = (_e1814 + 1u);
-                                                                phi_1499_ = (_e1811 + _e1812);
+                                                                phi_1587_ = (_e1814 + 1u);
+                                                                phi_1590_ = (_e1811 + _e1812);
                                                             } else {
-                                                                phi_1496_ = u32();
-                                                                phi_1499_ = f32();
+                                                                phi_1587_ = u32();
+                                                                phi_1590_ = f32();
                                                             }
-                                                            let _e1817 = phi_1496_;
-                                                            let _e1819 = phi_1499_;
+                                                            let _e1817 = phi_1587_;
+                                                            let _e1819 = phi_1590_;
                                                             continue;
                                                             continuing {
                                                                 let _e1820 = local_171;
-                                                                phi_1495_ = _e1817;
-                                                                phi_1498_ = _e1819;
+                                                                phi_1586_ = _e1817;
+                                                                phi_1589_ = _e1819;
                                                                 break if !(_e1820);
                                                             }
                                                         }
                                                         let _e1822 = local_136;
-                                                        phi_1018_ = (_e1822 + 1f);
+                                                        phi_1109_ = (_e1822 + 1f);
                                                         let _e4245 = local_460;
-                                                        phi_1021_ = _e4245;
+                                                        phi_1112_ = _e4245;
                                                     } else {
-                                                        phi_1018_ = f32();
-                                                        phi_1021_ = f32();
+                                                        phi_1109_ = f32();
+                                                        phi_1112_ = f32();
                                                     }
-                                                    let _e1825 = phi_1018_;
-                                                    let _e1827 = phi_1021_;
+                                                    let _e1825 = phi_1109_;
+                                                    let _e1827 = phi_1112_;
                                                     continue;
                                                     continuing {
                                                         let _e1828 = local_137;
-                                                        phi_1017_ = _e1825;
-                                                        phi_1020_ = _e1827;
-                                                        phi_4755_ = _e1340;
+                                                        phi_1108_ = _e1825;
+                                                        phi_1111_ = _e1827;
+                                                        phi_4947_ = _e1340;
                                                         break if !(_e1828);
                                                     }
                                                 }
-                                                let _e1831 = phi_4755_;
-                                                phi_4822_ = _e1831;
+                                                let _e1831 = phi_4947_;
+                                                phi_5014_ = _e1831;
                                                 if _e1831 {
                                                     break;
                                                 }
                                                 let _e1832 = local_133;
-                                                phi_4823_ = _e1831;
-                                                phi_1004_ = (_e1832 + 1f);
+                                                phi_5015_ = _e1831;
+                                                phi_1095_ = (_e1832 + 1f);
                                                 let _e4251 = local_461;
-                                                phi_1007_ = _e4251;
+                                                phi_1098_ = _e4251;
                                             } else {
-                                                phi_4823_ = _e1340;
-                                                phi_1004_ = f32();
-                                                phi_1007_ = f32();
+                                                phi_5015_ = _e1340;
+                                                phi_1095_ = f32();
+                                                phi_1098_ = f32();
                                             }
-                                            let _e1835 = phi_4823_;
-                                            let _e1837 = phi_1004_;
-                                            let _e1839 = phi_1007_;
+                                            let _e1835 = phi_5015_;
+                                            let _e1837 = phi_1095_;
+                                            let _e1839 = phi_1098_;
                                             continue;
                                             continuing {
                                                 let _e1840 = local_134;
-                                                phi_4766_ = _e1835;
-                                                phi_1003_ = _e1837;
-                                                phi_1006_ = _e1839;
-                                                phi_4822_ = _e1835;
+                                                phi_4958_ = _e1835;
+                                                phi_1094_ = _e1837;
+                                                phi_1097_ = _e1839;
+                                                phi_5014_ = _e1835;
                                                 break if !(_e1840);
                                             }
                                         }
-                                        let _e1843 = phi_4822_;
-                                        phi_5068_ = _e1843;
+                                        let _e1843 = phi_5014_;
+                                        phi_5278_ = _e1843;
                                         if _e1843 {
                                             break;
                                         }
-                                        phi_4840_ = _e1843;
+                                        phi_5032_ = _e1843;
                                         let _e4257 = local_462;
-                                        phi_1511_ = _e4257;
+                                        phi_1602_ = _e4257;
                                     }
-                                    let _e1868 = phi_4840_;
-                                    let _e1870 = phi_1511_;
+                                    let _e1868 = phi_5032_;
+                                    let _e1870 = phi_1602_;
                                     let _e1871 = local_129;
-                                    phi_4839_ = _e1868;
-                                    phi_1513_ = (_e1871 / _e1870);
+                                    phi_5031_ = _e1868;
+                                    phi_1604_ = (_e1871 / _e1870);
                                 }
-                                let _e1874 = phi_4839_;
-                                let _e1876 = phi_1513_;
+                                let _e1874 = phi_5031_;
+                                let _e1876 = phi_1604_;
                                 local_172 = _e1876;
-                                phi_1515_ = 0u;
+                                phi_1606_ = 0u;
                                 loop {
-                                    let _e1878 = phi_1515_;
+                                    let _e1878 = phi_1606_;
                                     local_173 = _e1878;
                                     let _e1879 = local_173;
                                     let _e1880 = local_44;
@@ -2313,19 +2313,19 @@ fn function_() {
                                         let _e1885 = local_16;
                                         let _e1890 = local_444;
                                         let _e1891 = (_e1890 >= f32((2u * (_e1885 << bitcast<u32>((_e1883 & 31u))))));
-                                        phi_1516_ = select(u32(), _e1883, _e1891);
-                                        phi_1537_ = _e1891;
+                                        phi_1607_ = select(u32(), _e1883, _e1891);
+                                        phi_1628_ = _e1891;
                                     } else {
-                                        phi_1516_ = u32();
-                                        phi_1537_ = false;
+                                        phi_1607_ = u32();
+                                        phi_1628_ = false;
                                     }
-                                    let _e1894 = phi_1516_;
-                                    let _e1896 = phi_1537_;
+                                    let _e1894 = phi_1607_;
+                                    let _e1896 = phi_1628_;
                                     local_174 = _e1896;
                                     continue;
                                     continuing {
                                         let _e1897 = local_174;
-                                        phi_1515_ = _e1894;
+                                        phi_1606_ = _e1894;
                                         break if !(_e1897);
                                     }
                                 }
@@ -2337,7 +2337,7 @@ fn function_() {
                                 local_176 = _e1909;
                                 if (_e1909 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1911 = local_176;
@@ -2348,7 +2348,7 @@ fn function_() {
                                 local_177 = _e1915;
                                 if (_e1915 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1917 = local_177;
@@ -2361,7 +2361,7 @@ fn function_() {
                                 local_179 = _e1928;
                                 if (_e1928 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1930 = local_179;
@@ -2374,7 +2374,7 @@ fn function_() {
                                 local_181 = _e1936;
                                 if (_e1936 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1938 = local_181;
@@ -2387,7 +2387,7 @@ fn function_() {
                                 local_183 = _e1945;
                                 if (_e1945 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1947 = local_183;
@@ -2400,7 +2400,7 @@ fn function_() {
                                 local_185 = _e1955;
                                 if (_e1955 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1957 = local_185;
@@ -2413,7 +2413,7 @@ fn function_() {
                                 local_187 = _e1965;
                                 if (_e1965 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1967 = local_187;
@@ -2426,7 +2426,7 @@ fn function_() {
                                 local_189 = _e1975;
                                 if (_e1975 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1977 = local_189;
@@ -2437,17 +2437,17 @@ fn function_() {
                                 local_190 = _e1981;
                                 if (_e1981 < 5888u) {
                                 } else {
-                                    phi_5068_ = true;
+                                    phi_5278_ = true;
                                     break;
                                 }
                                 let _e1983 = local_190;
                                 let _e1985 = local_118;
                                 global_11[_e1983] = _e1985;
-                                phi_4835_ = _e1874;
+                                phi_5027_ = _e1874;
                             } else {
-                                phi_4835_ = _e1014;
+                                phi_5027_ = _e1014;
                             }
-                            let _e1987 = phi_4835_;
+                            let _e1987 = phi_5027_;
                             storageBarrier();
                             workgroupBarrier();
                             let _e1988 = local_48;
@@ -2456,9 +2456,9 @@ fn function_() {
                             let _e1992 = select(256u, _e1990, (_e1990 < 256u));
                             local_447 = _e1992;
                             local_459[0u] = false;
-                            phi_1642_ = 0u;
+                            phi_1733_ = 0u;
                             loop {
-                                let _e1995 = phi_1642_;
+                                let _e1995 = phi_1733_;
                                 local_191 = _e1995;
                                 let _e1996 = local_191;
                                 let _e1997 = (_e1996 < 1u);
@@ -2469,7 +2469,7 @@ fn function_() {
                                     local_193 = (_e1998 + _e1999);
                                     let _e2001 = local_33;
                                     if _e2001 {
-                                        phi_4824_ = true;
+                                        phi_5016_ = true;
                                         break;
                                     }
                                     let _e2002 = local_193;
@@ -2478,7 +2478,7 @@ fn function_() {
                                     local_194 = (_e2005 + (_e2002 % _e2003));
                                     let _e2007 = local_33;
                                     if _e2007 {
-                                        phi_4824_ = true;
+                                        phi_5016_ = true;
                                         break;
                                     }
                                     let _e2008 = local_193;
@@ -2495,46 +2495,46 @@ fn function_() {
                                         if _e2018 {
                                             let _e2019 = local_195;
                                             let _e2020 = local_14;
-                                            phi_1708_ = (_e2019 < _e2020);
+                                            phi_1799_ = (_e2019 < _e2020);
                                         } else {
-                                            phi_1708_ = bool();
+                                            phi_1799_ = bool();
                                         }
-                                        let _e2023 = phi_1708_;
+                                        let _e2023 = phi_1799_;
                                         let _e2024 = local_196;
-                                        phi_1710_ = _e2023;
-                                        phi_1711_ = select(true, false, _e2024);
+                                        phi_1801_ = _e2023;
+                                        phi_1802_ = select(true, false, _e2024);
                                     } else {
-                                        phi_1710_ = bool();
-                                        phi_1711_ = true;
+                                        phi_1801_ = bool();
+                                        phi_1802_ = true;
                                     }
-                                    let _e2027 = phi_1710_;
-                                    let _e2029 = phi_1711_;
+                                    let _e2027 = phi_1801_;
+                                    let _e2029 = phi_1802_;
                                     local_448 = select(_e2027, false, _e2029);
                                     let _e2031 = local_192;
                                     if _e2031 {
                                     } else {
-                                        phi_4824_ = true;
+                                        phi_5016_ = true;
                                         break;
                                     }
                                     let _e2032 = local_191;
                                     let _e2034 = local_448;
                                     local_459[_e2032] = _e2034;
                                     let _e2035 = local_191;
-                                    phi_1643_ = (_e2035 + 1u);
+                                    phi_1734_ = (_e2035 + 1u);
                                 } else {
-                                    phi_1643_ = u32();
+                                    phi_1734_ = u32();
                                 }
-                                let _e2038 = phi_1643_;
+                                let _e2038 = phi_1734_;
                                 continue;
                                 continuing {
                                     let _e2039 = local_192;
-                                    phi_1642_ = _e2038;
-                                    phi_4824_ = _e1987;
+                                    phi_1733_ = _e2038;
+                                    phi_5016_ = _e1987;
                                     break if !(_e2039);
                                 }
                             }
-                            let _e2042 = phi_4824_;
-                            phi_5068_ = _e2042;
+                            let _e2042 = phi_5016_;
+                            phi_5278_ = _e2042;
                             if _e2042 {
                                 break;
                             }
@@ -2542,24 +2542,24 @@ fn function_() {
                             local_456[0u] = _e2043;
                             let _e2045 = local_33;
                             if _e2045 {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2046 = local_33;
                             if _e2046 {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2047 = local_64;
                             local_197 = (f32(_e2047) + 0.5f);
                             let _e2050 = local_33;
                             if _e2050 {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2051 = local_33;
                             if _e2051 {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2052 = local_65;
@@ -2569,7 +2569,7 @@ fn function_() {
                             local_199 = _e2056;
                             if (_e2056 < 5888u) {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2058 = local_199;
@@ -2579,7 +2579,7 @@ fn function_() {
                             let _e2062 = local;
                             if (_e2062 < 5888u) {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2064 = local;
@@ -2590,7 +2590,7 @@ fn function_() {
                             local_202 = _e2069;
                             if (_e2069 < 5888u) {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2071 = local_202;
@@ -2601,7 +2601,7 @@ fn function_() {
                             local_204 = _e2076;
                             if (_e2076 < 5888u) {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2078 = local_204;
@@ -2611,7 +2611,7 @@ fn function_() {
                             let _e2085 = local_73;
                             if (_e2085 < 5888u) {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2087 = local_73;
@@ -2622,7 +2622,7 @@ fn function_() {
                             local_206 = _e2092;
                             if (_e2092 < 5888u) {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2094 = local_206;
@@ -2633,7 +2633,7 @@ fn function_() {
                             local_208 = _e2099;
                             if (_e2099 < 5888u) {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2101 = local_208;
@@ -2646,7 +2646,7 @@ fn function_() {
                             local_211 = _e2107;
                             if _e2107 {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2108 = local_210;
@@ -2655,7 +2655,7 @@ fn function_() {
                             let _e2113 = local_211;
                             if _e2113 {
                             } else {
-                                phi_5068_ = true;
+                                phi_5278_ = true;
                                 break;
                             }
                             let _e2114 = global_11[_e2108];
@@ -2664,9 +2664,9 @@ fn function_() {
                             let _e2119 = local_209;
                             let _e2120 = local_212;
                             local_455[0u] = false;
-                            phi_1942_ = 0u;
+                            phi_2033_ = 0u;
                             loop {
-                                let _e2124 = phi_1942_;
+                                let _e2124 = phi_2033_;
                                 local_213 = _e2124;
                                 let _e2125 = local_213;
                                 let _e2126 = (_e2125 < 1u);
@@ -2675,55 +2675,55 @@ fn function_() {
                                     let _e2127 = local_214;
                                     if _e2127 {
                                     } else {
-                                        phi_4842_ = true;
+                                        phi_5034_ = true;
                                         break;
                                     }
                                     let _e2128 = local_213;
                                     let _e2130 = local_456[_e2128];
                                     if _e2130 {
                                         let _e2131 = local_200;
-                                        phi_1963_ = (_e2131 < 0.99902344f);
+                                        phi_2054_ = (_e2131 < 0.99902344f);
                                     } else {
-                                        phi_1963_ = false;
+                                        phi_2054_ = false;
                                     }
-                                    let _e2134 = phi_1963_;
+                                    let _e2134 = phi_2054_;
                                     local_215 = _e2134;
                                     let _e2135 = local_214;
                                     if _e2135 {
                                     } else {
-                                        phi_4842_ = true;
+                                        phi_5034_ = true;
                                         break;
                                     }
                                     let _e2136 = local_213;
                                     let _e2138 = local_215;
                                     local_455[_e2136] = _e2138;
                                     let _e2139 = local_213;
-                                    phi_1943_ = (_e2139 + 1u);
+                                    phi_2034_ = (_e2139 + 1u);
                                 } else {
-                                    phi_1943_ = u32();
+                                    phi_2034_ = u32();
                                 }
-                                let _e2142 = phi_1943_;
+                                let _e2142 = phi_2034_;
                                 continue;
                                 continuing {
                                     let _e2143 = local_214;
-                                    phi_1942_ = _e2142;
-                                    phi_4842_ = _e2042;
+                                    phi_2033_ = _e2142;
+                                    phi_5034_ = _e2042;
                                     break if !(_e2143);
                                 }
                             }
-                            let _e2146 = phi_4842_;
-                            phi_5068_ = _e2146;
+                            let _e2146 = phi_5034_;
+                            phi_5278_ = _e2146;
                             if _e2146 {
                                 break;
                             }
                             let _e2147 = local_455[0u];
                             local_457[0u] = _e2147;
                             local_454[0u] = 0u;
-                            phi_4854_ = _e2146;
-                            phi_1976_ = 0u;
+                            phi_5046_ = _e2146;
+                            phi_2067_ = 0u;
                             loop {
-                                let _e2151 = phi_4854_;
-                                let _e2153 = phi_1976_;
+                                let _e2151 = phi_5046_;
+                                let _e2153 = phi_2067_;
                                 local_216 = _e2153;
                                 let _e2154 = local_216;
                                 let _e2155 = (_e2154 < 1u);
@@ -2732,7 +2732,7 @@ fn function_() {
                                     let _e2156 = local_217;
                                     if _e2156 {
                                     } else {
-                                        phi_4855_ = true;
+                                        phi_5047_ = true;
                                         break;
                                     }
                                     let _e2157 = local_216;
@@ -2744,17 +2744,17 @@ fn function_() {
                                         local_218 = _e2163;
                                         if (_e2163 < 5888u) {
                                         } else {
-                                            phi_4855_ = true;
+                                            phi_5047_ = true;
                                             break;
                                         }
                                         let _e2165 = local_218;
                                         let _e2167 = global_11[_e2165];
                                         local_219 = bitcast<f32>(_e2167);
-                                        phi_2006_ = 0u;
-                                        phi_2009_ = _e1992;
+                                        phi_2097_ = 0u;
+                                        phi_2100_ = _e1992;
                                         loop {
-                                            let _e2170 = phi_2006_;
-                                            let _e2172 = phi_2009_;
+                                            let _e2170 = phi_2097_;
+                                            let _e2172 = phi_2100_;
                                             local_220 = _e2170;
                                             local_221 = _e2172;
                                             local_463 = _e2170;
@@ -2771,7 +2771,7 @@ fn function_() {
                                                 local_224 = _e2180;
                                                 if (_e2180 < 5888u) {
                                                 } else {
-                                                    phi_4850_ = true;
+                                                    phi_5042_ = true;
                                                     break;
                                                 }
                                                 let _e2182 = local_224;
@@ -2780,76 +2780,76 @@ fn function_() {
                                                 let _e2187 = (bitcast<f32>(_e2184) >= _e2186);
                                                 local_225 = _e2187;
                                                 if _e2187 {
-                                                    phi_2033_ = _e2170;
+                                                    phi_2124_ = _e2170;
                                                 } else {
                                                     let _e2188 = local_223;
-                                                    phi_2033_ = (_e2188 + 1u);
+                                                    phi_2124_ = (_e2188 + 1u);
                                                 }
-                                                let _e2191 = phi_2033_;
+                                                let _e2191 = phi_2124_;
                                                 let _e2192 = local_225;
                                                 let _e2193 = local_223;
                                                 let _e2194 = local_221;
-                                                phi_2007_ = _e2191;
-                                                phi_2010_ = select(_e2194, _e2193, _e2192);
+                                                phi_2098_ = _e2191;
+                                                phi_2101_ = select(_e2194, _e2193, _e2192);
                                             } else {
-                                                phi_2007_ = u32();
-                                                phi_2010_ = u32();
+                                                phi_2098_ = u32();
+                                                phi_2101_ = u32();
                                             }
-                                            let _e2197 = phi_2007_;
-                                            let _e2199 = phi_2010_;
+                                            let _e2197 = phi_2098_;
+                                            let _e2199 = phi_2101_;
                                             continue;
                                             continuing {
                                                 let _e2200 = local_222;
-                                                phi_2006_ = _e2197;
-                                                phi_2009_ = _e2199;
-                                                phi_4850_ = _e2151;
+                                                phi_2097_ = _e2197;
+                                                phi_2100_ = _e2199;
+                                                phi_5042_ = _e2151;
                                                 break if !(_e2200);
                                             }
                                         }
-                                        let _e2203 = phi_4850_;
-                                        phi_4855_ = _e2203;
+                                        let _e2203 = phi_5042_;
+                                        phi_5047_ = _e2203;
                                         if _e2203 {
                                             break;
                                         }
-                                        phi_4857_ = _e2203;
+                                        phi_5049_ = _e2203;
                                         let _e4285 = local_463;
-                                        phi_2035_ = _e4285;
+                                        phi_2126_ = _e4285;
                                     } else {
-                                        phi_4857_ = _e2151;
-                                        phi_2035_ = 0u;
+                                        phi_5049_ = _e2151;
+                                        phi_2126_ = 0u;
                                     }
-                                    let _e2205 = phi_4857_;
-                                    let _e2207 = phi_2035_;
+                                    let _e2205 = phi_5049_;
+                                    let _e2207 = phi_2126_;
                                     local_226 = _e2207;
                                     let _e2208 = local_217;
                                     if _e2208 {
                                     } else {
-                                        phi_4855_ = true;
+                                        phi_5047_ = true;
                                         break;
                                     }
                                     let _e2209 = local_216;
                                     let _e2211 = local_226;
                                     local_454[_e2209] = _e2211;
                                     let _e2212 = local_216;
-                                    phi_4856_ = _e2205;
-                                    phi_1977_ = (_e2212 + 1u);
+                                    phi_5048_ = _e2205;
+                                    phi_2068_ = (_e2212 + 1u);
                                 } else {
-                                    phi_4856_ = _e2151;
-                                    phi_1977_ = u32();
+                                    phi_5048_ = _e2151;
+                                    phi_2068_ = u32();
                                 }
-                                let _e2215 = phi_4856_;
-                                let _e2217 = phi_1977_;
+                                let _e2215 = phi_5048_;
+                                let _e2217 = phi_2068_;
                                 continue;
                                 continuing {
                                     let _e2218 = local_217;
-                                    phi_4854_ = _e2215;
-                                    phi_1976_ = _e2217;
-                                    phi_4855_ = _e2215;
+                                    phi_5046_ = _e2215;
+                                    phi_2067_ = _e2217;
+                                    phi_5047_ = _e2215;
                                     break if !(_e2218);
                                 }
                             }
-                            let _e2221 = phi_4855_;
-                            phi_5068_ = _e2221;
+                            let _e2221 = phi_5047_;
+                            phi_5278_ = _e2221;
                             if _e2221 {
                                 break;
                             }
@@ -2859,25 +2859,25 @@ fn function_() {
                             let _e2225 = f32(_e2224);
                             let _e2226 = local_20;
                             local_227 = ((_e2226 >> bitcast<u32>(8u)) & 7u);
-                            phi_4863_ = _e2221;
-                            phi_2066_ = _e2061;
-                            phi_2069_ = type_31(_e2117, _e2118, _e2119, _e2120, ((_e2114 & 2u) != 0u));
-                            phi_2071_ = 0u;
-                            phi_2073_ = select(select(u32(_e2225), 0u, !((_e2225 >= 0f))), 4294967295u, (_e2225 > 4294967000f));
-                            phi_2075_ = _e2225;
-                            phi_2077_ = 0f;
-                            phi_2079_ = false;
-                            phi_2081_ = array<f32, 3>(_e2082, _e2083, bitcast<f32>(_e2080));
+                            phi_5055_ = _e2221;
+                            phi_2157_ = _e2061;
+                            phi_2160_ = type_31(_e2117, _e2118, _e2119, _e2120, ((_e2114 & 2u) != 0u));
+                            phi_2162_ = 0u;
+                            phi_2164_ = select(select(u32(_e2225), 0u, !((_e2225 >= 0f))), 4294967295u, (_e2225 > 4294967000f));
+                            phi_2166_ = _e2225;
+                            phi_2168_ = 0f;
+                            phi_2170_ = false;
+                            phi_2172_ = array<f32, 3>(_e2082, _e2083, bitcast<f32>(_e2080));
                             loop {
-                                let _e2237 = phi_4863_;
-                                let _e2239 = phi_2066_;
-                                let _e2241 = phi_2069_;
-                                let _e2243 = phi_2071_;
-                                let _e2245 = phi_2073_;
-                                let _e2247 = phi_2075_;
-                                let _e2249 = phi_2077_;
-                                let _e2251 = phi_2079_;
-                                let _e2253 = phi_2081_;
+                                let _e2237 = phi_5055_;
+                                let _e2239 = phi_2157_;
+                                let _e2241 = phi_2160_;
+                                let _e2243 = phi_2162_;
+                                let _e2245 = phi_2164_;
+                                let _e2247 = phi_2166_;
+                                let _e2249 = phi_2168_;
+                                let _e2251 = phi_2170_;
+                                let _e2253 = phi_2172_;
                                 local_228 = _e2239;
                                 local_229 = _e2241;
                                 local_230 = _e2243;
@@ -2896,7 +2896,7 @@ fn function_() {
                                     local_237 = _e2258;
                                     if (_e2258 < 5888u) {
                                     } else {
-                                        phi_4964_ = true;
+                                        phi_5156_ = true;
                                         break;
                                     }
                                     let _e2260 = local_237;
@@ -2907,7 +2907,7 @@ fn function_() {
                                     local_239 = _e2265;
                                     if (_e2265 < 5888u) {
                                     } else {
-                                        phi_4964_ = true;
+                                        phi_5156_ = true;
                                         break;
                                     }
                                     let _e2267 = local_239;
@@ -2918,7 +2918,7 @@ fn function_() {
                                     local_241 = _e2272;
                                     if (_e2272 < 5888u) {
                                     } else {
-                                        phi_4964_ = true;
+                                        phi_5156_ = true;
                                         break;
                                     }
                                     let _e2274 = local_241;
@@ -2945,7 +2945,7 @@ fn function_() {
                                         local_247 = _e2295;
                                         if (_e2295 < 5888u) {
                                         } else {
-                                            phi_4964_ = true;
+                                            phi_5156_ = true;
                                             break;
                                         }
                                         let _e2297 = local_247;
@@ -2956,7 +2956,7 @@ fn function_() {
                                         local_249 = _e2301;
                                         if (_e2301 < 5888u) {
                                         } else {
-                                            phi_4964_ = true;
+                                            phi_5156_ = true;
                                             break;
                                         }
                                         let _e2303 = local_249;
@@ -2985,13 +2985,13 @@ fn function_() {
                                                 let _e2766 = local_227;
                                                 let _e2767 = local_227;
                                                 local_257 = (_e2766 * _e2767);
-                                                phi_2169_ = 0u;
-                                                phi_2172_ = 0f;
-                                                phi_2174_ = 0u;
+                                                phi_2260_ = 0u;
+                                                phi_2263_ = 0f;
+                                                phi_2265_ = 0u;
                                                 loop {
-                                                    let _e2770 = phi_2169_;
-                                                    let _e2772 = phi_2172_;
-                                                    let _e2774 = phi_2174_;
+                                                    let _e2770 = phi_2260_;
+                                                    let _e2772 = phi_2263_;
+                                                    let _e2774 = phi_2265_;
                                                     local_258 = _e2770;
                                                     local_259 = _e2772;
                                                     local_260 = _e2774;
@@ -3004,8 +3004,8 @@ fn function_() {
                                                             let _e2780 = local_258;
                                                             let _e2784 = local_248;
                                                             if ((_e2784 & (1u << bitcast<u32>((_e2780 & 31u)))) == 0u) {
-                                                                phi_3012_ = _e2772;
-                                                                phi_3013_ = _e2774;
+                                                                phi_3103_ = _e2772;
+                                                                phi_3104_ = _e2774;
                                                             } else {
                                                                 let _e2787 = local_227;
                                                                 local_261 = f32(_e2787);
@@ -3013,7 +3013,7 @@ fn function_() {
                                                                 let _e2790 = (_e2789 == 0u);
                                                                 local_262 = _e2790;
                                                                 if _e2790 {
-                                                                    phi_4858_ = true;
+                                                                    phi_5050_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2791 = local_258;
@@ -3022,7 +3022,7 @@ fn function_() {
                                                                 local_263 = ((f32((_e2791 % _e2792)) + 0.5f) / _e2796);
                                                                 let _e2798 = local_262;
                                                                 if _e2798 {
-                                                                    phi_4858_ = true;
+                                                                    phi_5050_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2799 = local_258;
@@ -3214,109 +3214,109 @@ fn function_() {
                                                                             let _e3233 = local_267;
                                                                             let _e3234 = local_265;
                                                                             let _e3236 = ((_e3230 - _e3231) * (_e3233 - _e3234));
-                                                                            phi_2985_ = select(select(0f, _e3229, (0f < _e3229)), _e3236, (_e3236 < _e3229));
+                                                                            phi_3076_ = select(select(0f, _e3229, (0f < _e3229)), _e3236, (_e3236 < _e3229));
                                                                         } else {
-                                                                            phi_2985_ = 0f;
+                                                                            phi_3076_ = 0f;
                                                                         }
-                                                                        let _e3242 = phi_2985_;
+                                                                        let _e3242 = phi_3076_;
                                                                         let _e3243 = local_272;
-                                                                        phi_2990_ = select(_e3242, 1f, _e3243);
+                                                                        phi_3081_ = select(_e3242, 1f, _e3243);
                                                                     } else {
-                                                                        phi_2990_ = 1f;
+                                                                        phi_3081_ = 1f;
                                                                     }
-                                                                    let _e3246 = phi_2990_;
+                                                                    let _e3246 = phi_3081_;
                                                                     let _e3247 = local_254;
                                                                     let _e3249 = local_270;
-                                                                    phi_3009_ = select((_e3246 / _e3247), 0f, _e3249);
+                                                                    phi_3100_ = select((_e3246 / _e3247), 0f, _e3249);
                                                                 } else {
                                                                     let _e2815 = local_264;
                                                                     let _e2817 = local_266;
                                                                     let _e2820 = local_265;
                                                                     let _e2823 = local_267;
-                                                                    phi_3009_ = select(0f, 1f, ((((_e2815 <= 0f) && (0f < _e2817)) && (_e2820 <= 0f)) && (0f < _e2823)));
+                                                                    phi_3100_ = select(0f, 1f, ((((_e2815 <= 0f) && (0f < _e2817)) && (_e2820 <= 0f)) && (0f < _e2823)));
                                                                 }
-                                                                let _e3252 = phi_3009_;
+                                                                let _e3252 = phi_3100_;
                                                                 let _e3253 = local_259;
                                                                 let _e3255 = local_260;
-                                                                phi_3012_ = (_e3253 + _e3252);
-                                                                phi_3013_ = (_e3255 + 1u);
+                                                                phi_3103_ = (_e3253 + _e3252);
+                                                                phi_3104_ = (_e3255 + 1u);
                                                             }
-                                                            let _e3258 = phi_3012_;
-                                                            let _e3260 = phi_3013_;
+                                                            let _e3258 = phi_3103_;
+                                                            let _e3260 = phi_3104_;
                                                             let _e3261 = local_258;
-                                                            phi_3015_ = (_e3261 + 1u);
-                                                            phi_3016_ = _e3258;
-                                                            phi_3017_ = _e3260;
+                                                            phi_3106_ = (_e3261 + 1u);
+                                                            phi_3107_ = _e3258;
+                                                            phi_3108_ = _e3260;
                                                         } else {
-                                                            phi_3015_ = u32();
-                                                            phi_3016_ = f32();
-                                                            phi_3017_ = u32();
+                                                            phi_3106_ = u32();
+                                                            phi_3107_ = f32();
+                                                            phi_3108_ = u32();
                                                         }
-                                                        let _e3264 = phi_3015_;
-                                                        let _e3266 = phi_3016_;
-                                                        let _e3268 = phi_3017_;
-                                                        phi_2170_ = _e3264;
-                                                        phi_2173_ = _e3266;
-                                                        phi_2175_ = _e3268;
-                                                        phi_3018_ = _e2779;
+                                                        let _e3264 = phi_3106_;
+                                                        let _e3266 = phi_3107_;
+                                                        let _e3268 = phi_3108_;
+                                                        phi_2261_ = _e3264;
+                                                        phi_2264_ = _e3266;
+                                                        phi_2266_ = _e3268;
+                                                        phi_3109_ = _e2779;
                                                     } else {
-                                                        phi_2170_ = u32();
-                                                        phi_2173_ = f32();
-                                                        phi_2175_ = u32();
-                                                        phi_3018_ = false;
+                                                        phi_2261_ = u32();
+                                                        phi_2264_ = f32();
+                                                        phi_2266_ = u32();
+                                                        phi_3109_ = false;
                                                     }
-                                                    let _e3270 = phi_2170_;
-                                                    let _e3272 = phi_2173_;
-                                                    let _e3274 = phi_2175_;
-                                                    let _e3276 = phi_3018_;
+                                                    let _e3270 = phi_2261_;
+                                                    let _e3272 = phi_2264_;
+                                                    let _e3274 = phi_2266_;
+                                                    let _e3276 = phi_3109_;
                                                     local_273 = _e3276;
                                                     continue;
                                                     continuing {
                                                         let _e3277 = local_273;
-                                                        phi_2169_ = _e3270;
-                                                        phi_2172_ = _e3272;
-                                                        phi_2174_ = _e3274;
-                                                        phi_4858_ = _e2237;
+                                                        phi_2260_ = _e3270;
+                                                        phi_2263_ = _e3272;
+                                                        phi_2265_ = _e3274;
+                                                        phi_5050_ = _e2237;
                                                         break if !(_e3277);
                                                     }
                                                 }
-                                                let _e3280 = phi_4858_;
-                                                phi_4964_ = _e3280;
+                                                let _e3280 = phi_5050_;
+                                                phi_5156_ = _e3280;
                                                 if _e3280 {
                                                     break;
                                                 }
                                                 let _e3281 = local_260;
                                                 if (_e3281 == 0u) {
-                                                    phi_3029_ = 0f;
+                                                    phi_3120_ = 0f;
                                                 } else {
                                                     let _e3283 = local_260;
                                                     let _e3285 = local_259;
-                                                    phi_3029_ = (_e3285 / f32(_e3283));
+                                                    phi_3120_ = (_e3285 / f32(_e3283));
                                                 }
-                                                let _e3288 = phi_3029_;
+                                                let _e3288 = phi_3120_;
                                                 let _e3289 = local_253;
                                                 let _e3290 = local_255;
-                                                phi_4987_ = _e3280;
-                                                phi_3034_ = select(_e3288, _e3290, _e3289);
+                                                phi_5179_ = _e3280;
+                                                phi_3125_ = select(_e3288, _e3290, _e3289);
                                             } else {
-                                                phi_4987_ = _e2237;
-                                                phi_3034_ = _e2762;
+                                                phi_5179_ = _e2237;
+                                                phi_3125_ = _e2762;
                                             }
-                                            let _e3293 = phi_4987_;
-                                            let _e3295 = phi_3034_;
-                                            phi_4986_ = _e3293;
-                                            phi_3501_ = _e3295;
+                                            let _e3293 = phi_5179_;
+                                            let _e3295 = phi_3125_;
+                                            phi_5178_ = _e3293;
+                                            phi_3592_ = _e3295;
                                         } else {
                                             let _e2309 = local_25;
                                             let _e2310 = (_e2309 == 0u);
                                             local_274 = _e2310;
                                             if _e2310 {
                                                 let _e2311 = local_32;
-                                                phi_3045_ = (_e2311 == 0u);
+                                                phi_3136_ = (_e2311 == 0u);
                                             } else {
-                                                phi_3045_ = false;
+                                                phi_3136_ = false;
                                             }
-                                            let _e2314 = phi_3045_;
+                                            let _e2314 = phi_3136_;
                                             if _e2314 {
                                                 let _e2729 = local_242;
                                                 let _e2730 = local_250;
@@ -3326,14 +3326,14 @@ fn function_() {
                                                 let _e2739 = local_242;
                                                 let _e2741 = local_250;
                                                 let _e2743 = ((_e2739 - sqrt(_e2737)) * (1f / _e2741));
-                                                phi_3500_ = select(select(0f, select(1f, _e2743, (_e2743 < 1f)), (0f < _e2743)), 1f, ((0f < _e2731) && (_e2734 <= (_e2731 * _e2731))));
+                                                phi_3591_ = select(select(0f, select(1f, _e2743, (_e2743 < 1f)), (0f < _e2743)), 1f, ((0f < _e2731) && (_e2734 <= (_e2731 * _e2731))));
                                             } else {
                                                 let _e2315 = local_230;
                                                 let _e2316 = (3840u + _e2315);
                                                 local_275 = _e2316;
                                                 if (_e2316 < 5888u) {
                                                 } else {
-                                                    phi_4964_ = true;
+                                                    phi_5156_ = true;
                                                     break;
                                                 }
                                                 let _e2318 = local_275;
@@ -3342,11 +3342,11 @@ fn function_() {
                                                 let _e2322 = local_274;
                                                 if _e2322 {
                                                     let _e2323 = local_32;
-                                                    phi_3091_ = (_e2323 == 0u);
+                                                    phi_3182_ = (_e2323 == 0u);
                                                 } else {
-                                                    phi_3091_ = false;
+                                                    phi_3182_ = false;
                                                 }
-                                                let _e2326 = phi_3091_;
+                                                let _e2326 = phi_3182_;
                                                 if _e2326 {
                                                     let _e2707 = local_242;
                                                     let _e2708 = local_250;
@@ -3356,7 +3356,7 @@ fn function_() {
                                                     let _e2717 = local_242;
                                                     let _e2719 = local_250;
                                                     let _e2721 = ((_e2717 - sqrt(_e2715)) * (1f / _e2719));
-                                                    phi_3499_ = select(select(0f, select(1f, _e2721, (_e2721 < 1f)), (0f < _e2721)), 1f, ((0f < _e2709) && (_e2712 <= (_e2709 * _e2709))));
+                                                    phi_3590_ = select(select(0f, select(1f, _e2721, (_e2721 < 1f)), (0f < _e2721)), 1f, ((0f < _e2709) && (_e2712 <= (_e2709 * _e2709))));
                                                 } else {
                                                     let _e2327 = local_276;
                                                     let _e2328 = local_243;
@@ -3405,25 +3405,25 @@ fn function_() {
                                                                             let _e2454 = (_e2447 < 0f);
                                                                             local_288 = _e2454;
                                                                             if _e2454 {
-                                                                                phi_3212_ = f32();
-                                                                                phi_3213_ = true;
+                                                                                phi_3303_ = f32();
+                                                                                phi_3304_ = true;
                                                                             } else {
                                                                                 let _e2455 = local_285;
                                                                                 if (_e2455 < 0f) {
-                                                                                    phi_3210_ = f32();
-                                                                                    phi_3211_ = true;
+                                                                                    phi_3301_ = f32();
+                                                                                    phi_3302_ = true;
                                                                                 } else {
                                                                                     let _e2457 = local_284;
                                                                                     let _e2458 = local_280;
                                                                                     if (_e2457 >= _e2458) {
-                                                                                        phi_3208_ = f32();
-                                                                                        phi_3209_ = true;
+                                                                                        phi_3299_ = f32();
+                                                                                        phi_3300_ = true;
                                                                                     } else {
                                                                                         let _e2460 = local_285;
                                                                                         let _e2461 = local_280;
                                                                                         let _e2462 = (_e2460 >= _e2461);
                                                                                         if _e2462 {
-                                                                                            phi_3207_ = f32();
+                                                                                            phi_3298_ = f32();
                                                                                         } else {
                                                                                             let _e2463 = local_285;
                                                                                             let _e2465 = local_285;
@@ -3437,29 +3437,29 @@ fn function_() {
                                                                                             let _e2484 = local_8;
                                                                                             if (_e2483 < _e2484) {
                                                                                             } else {
-                                                                                                phi_4964_ = true;
+                                                                                                phi_5156_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2486 = local_289;
                                                                                             let _e2489 = global_10.member[_e2486];
-                                                                                            phi_3207_ = bitcast<f32>(_e2489);
+                                                                                            phi_3298_ = bitcast<f32>(_e2489);
                                                                                         }
-                                                                                        let _e2492 = phi_3207_;
-                                                                                        phi_3208_ = _e2492;
-                                                                                        phi_3209_ = _e2462;
+                                                                                        let _e2492 = phi_3298_;
+                                                                                        phi_3299_ = _e2492;
+                                                                                        phi_3300_ = _e2462;
                                                                                     }
-                                                                                    let _e2494 = phi_3208_;
-                                                                                    let _e2496 = phi_3209_;
-                                                                                    phi_3210_ = _e2494;
-                                                                                    phi_3211_ = _e2496;
+                                                                                    let _e2494 = phi_3299_;
+                                                                                    let _e2496 = phi_3300_;
+                                                                                    phi_3301_ = _e2494;
+                                                                                    phi_3302_ = _e2496;
                                                                                 }
-                                                                                let _e2498 = phi_3210_;
-                                                                                let _e2500 = phi_3211_;
-                                                                                phi_3212_ = _e2498;
-                                                                                phi_3213_ = _e2500;
+                                                                                let _e2498 = phi_3301_;
+                                                                                let _e2500 = phi_3302_;
+                                                                                phi_3303_ = _e2498;
+                                                                                phi_3304_ = _e2500;
                                                                             }
-                                                                            let _e2502 = phi_3212_;
-                                                                            let _e2504 = phi_3213_;
+                                                                            let _e2502 = phi_3303_;
+                                                                            let _e2504 = phi_3304_;
                                                                             let _e2506 = local_286;
                                                                             let _e2507 = (1f - _e2506);
                                                                             local_290 = _e2507;
@@ -3470,25 +3470,25 @@ fn function_() {
                                                                             let _e2511 = (_e2510 < 0f);
                                                                             local_293 = _e2511;
                                                                             if _e2511 {
-                                                                                phi_3268_ = f32();
-                                                                                phi_3269_ = true;
+                                                                                phi_3359_ = f32();
+                                                                                phi_3360_ = true;
                                                                             } else {
                                                                                 let _e2512 = local_285;
                                                                                 if (_e2512 < 0f) {
-                                                                                    phi_3266_ = f32();
-                                                                                    phi_3267_ = true;
+                                                                                    phi_3357_ = f32();
+                                                                                    phi_3358_ = true;
                                                                                 } else {
                                                                                     let _e2514 = local_292;
                                                                                     let _e2515 = local_280;
                                                                                     if (_e2514 >= _e2515) {
-                                                                                        phi_3264_ = f32();
-                                                                                        phi_3265_ = true;
+                                                                                        phi_3355_ = f32();
+                                                                                        phi_3356_ = true;
                                                                                     } else {
                                                                                         let _e2517 = local_285;
                                                                                         let _e2518 = local_280;
                                                                                         let _e2519 = (_e2517 >= _e2518);
                                                                                         if _e2519 {
-                                                                                            phi_3263_ = f32();
+                                                                                            phi_3354_ = f32();
                                                                                         } else {
                                                                                             let _e2520 = local_285;
                                                                                             let _e2522 = local_285;
@@ -3502,29 +3502,29 @@ fn function_() {
                                                                                             let _e2541 = local_8;
                                                                                             if (_e2540 < _e2541) {
                                                                                             } else {
-                                                                                                phi_4964_ = true;
+                                                                                                phi_5156_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2543 = local_294;
                                                                                             let _e2546 = global_10.member[_e2543];
-                                                                                            phi_3263_ = bitcast<f32>(_e2546);
+                                                                                            phi_3354_ = bitcast<f32>(_e2546);
                                                                                         }
-                                                                                        let _e2549 = phi_3263_;
-                                                                                        phi_3264_ = _e2549;
-                                                                                        phi_3265_ = _e2519;
+                                                                                        let _e2549 = phi_3354_;
+                                                                                        phi_3355_ = _e2549;
+                                                                                        phi_3356_ = _e2519;
                                                                                     }
-                                                                                    let _e2551 = phi_3264_;
-                                                                                    let _e2553 = phi_3265_;
-                                                                                    phi_3266_ = _e2551;
-                                                                                    phi_3267_ = _e2553;
+                                                                                    let _e2551 = phi_3355_;
+                                                                                    let _e2553 = phi_3356_;
+                                                                                    phi_3357_ = _e2551;
+                                                                                    phi_3358_ = _e2553;
                                                                                 }
-                                                                                let _e2555 = phi_3266_;
-                                                                                let _e2557 = phi_3267_;
-                                                                                phi_3268_ = _e2555;
-                                                                                phi_3269_ = _e2557;
+                                                                                let _e2555 = phi_3357_;
+                                                                                let _e2557 = phi_3358_;
+                                                                                phi_3359_ = _e2555;
+                                                                                phi_3360_ = _e2557;
                                                                             }
-                                                                            let _e2559 = phi_3268_;
-                                                                            let _e2561 = phi_3269_;
+                                                                            let _e2559 = phi_3359_;
+                                                                            let _e2561 = phi_3360_;
                                                                             let _e2563 = local_286;
                                                                             let _e2565 = local_291;
                                                                             local_295 = (_e2565 + (select(_e2559, 0f, _e2561) * _e2563));
@@ -3532,25 +3532,25 @@ fn function_() {
                                                                             local_296 = (_e2567 + 1f);
                                                                             let _e2569 = local_288;
                                                                             if _e2569 {
-                                                                                phi_3324_ = f32();
-                                                                                phi_3325_ = true;
+                                                                                phi_3415_ = f32();
+                                                                                phi_3416_ = true;
                                                                             } else {
                                                                                 let _e2570 = local_296;
                                                                                 if (_e2570 < 0f) {
-                                                                                    phi_3322_ = f32();
-                                                                                    phi_3323_ = true;
+                                                                                    phi_3413_ = f32();
+                                                                                    phi_3414_ = true;
                                                                                 } else {
                                                                                     let _e2572 = local_284;
                                                                                     let _e2573 = local_280;
                                                                                     if (_e2572 >= _e2573) {
-                                                                                        phi_3320_ = f32();
-                                                                                        phi_3321_ = true;
+                                                                                        phi_3411_ = f32();
+                                                                                        phi_3412_ = true;
                                                                                     } else {
                                                                                         let _e2575 = local_296;
                                                                                         let _e2576 = local_280;
                                                                                         let _e2577 = (_e2575 >= _e2576);
                                                                                         if _e2577 {
-                                                                                            phi_3319_ = f32();
+                                                                                            phi_3410_ = f32();
                                                                                         } else {
                                                                                             let _e2578 = local_296;
                                                                                             let _e2580 = local_296;
@@ -3564,52 +3564,52 @@ fn function_() {
                                                                                             let _e2599 = local_8;
                                                                                             if (_e2598 < _e2599) {
                                                                                             } else {
-                                                                                                phi_4964_ = true;
+                                                                                                phi_5156_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2601 = local_297;
                                                                                             let _e2604 = global_10.member[_e2601];
-                                                                                            phi_3319_ = bitcast<f32>(_e2604);
+                                                                                            phi_3410_ = bitcast<f32>(_e2604);
                                                                                         }
-                                                                                        let _e2607 = phi_3319_;
-                                                                                        phi_3320_ = _e2607;
-                                                                                        phi_3321_ = _e2577;
+                                                                                        let _e2607 = phi_3410_;
+                                                                                        phi_3411_ = _e2607;
+                                                                                        phi_3412_ = _e2577;
                                                                                     }
-                                                                                    let _e2609 = phi_3320_;
-                                                                                    let _e2611 = phi_3321_;
-                                                                                    phi_3322_ = _e2609;
-                                                                                    phi_3323_ = _e2611;
+                                                                                    let _e2609 = phi_3411_;
+                                                                                    let _e2611 = phi_3412_;
+                                                                                    phi_3413_ = _e2609;
+                                                                                    phi_3414_ = _e2611;
                                                                                 }
-                                                                                let _e2613 = phi_3322_;
-                                                                                let _e2615 = phi_3323_;
-                                                                                phi_3324_ = _e2613;
-                                                                                phi_3325_ = _e2615;
+                                                                                let _e2613 = phi_3413_;
+                                                                                let _e2615 = phi_3414_;
+                                                                                phi_3415_ = _e2613;
+                                                                                phi_3416_ = _e2615;
                                                                             }
-                                                                            let _e2617 = phi_3324_;
-                                                                            let _e2619 = phi_3325_;
+                                                                            let _e2617 = phi_3415_;
+                                                                            let _e2619 = phi_3416_;
                                                                             let _e2621 = local_290;
                                                                             local_298 = (select(_e2617, 0f, _e2619) * _e2621);
                                                                             let _e2623 = local_293;
                                                                             if _e2623 {
-                                                                                phi_3381_ = f32();
-                                                                                phi_3382_ = true;
+                                                                                phi_3472_ = f32();
+                                                                                phi_3473_ = true;
                                                                             } else {
                                                                                 let _e2624 = local_296;
                                                                                 if (_e2624 < 0f) {
-                                                                                    phi_3379_ = f32();
-                                                                                    phi_3380_ = true;
+                                                                                    phi_3470_ = f32();
+                                                                                    phi_3471_ = true;
                                                                                 } else {
                                                                                     let _e2626 = local_292;
                                                                                     let _e2627 = local_280;
                                                                                     if (_e2626 >= _e2627) {
-                                                                                        phi_3377_ = f32();
-                                                                                        phi_3378_ = true;
+                                                                                        phi_3468_ = f32();
+                                                                                        phi_3469_ = true;
                                                                                     } else {
                                                                                         let _e2629 = local_296;
                                                                                         let _e2630 = local_280;
                                                                                         let _e2631 = (_e2629 >= _e2630);
                                                                                         if _e2631 {
-                                                                                            phi_3376_ = f32();
+                                                                                            phi_3467_ = f32();
                                                                                         } else {
                                                                                             let _e2632 = local_296;
                                                                                             let _e2634 = local_296;
@@ -3623,70 +3623,70 @@ fn function_() {
                                                                                             let _e2653 = local_8;
                                                                                             if (_e2652 < _e2653) {
                                                                                             } else {
-                                                                                                phi_4964_ = true;
+                                                                                                phi_5156_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2655 = local_299;
                                                                                             let _e2658 = global_10.member[_e2655];
-                                                                                            phi_3376_ = bitcast<f32>(_e2658);
+                                                                                            phi_3467_ = bitcast<f32>(_e2658);
                                                                                         }
-                                                                                        let _e2661 = phi_3376_;
-                                                                                        phi_3377_ = _e2661;
-                                                                                        phi_3378_ = _e2631;
+                                                                                        let _e2661 = phi_3467_;
+                                                                                        phi_3468_ = _e2661;
+                                                                                        phi_3469_ = _e2631;
                                                                                     }
-                                                                                    let _e2663 = phi_3377_;
-                                                                                    let _e2665 = phi_3378_;
-                                                                                    phi_3379_ = _e2663;
-                                                                                    phi_3380_ = _e2665;
+                                                                                    let _e2663 = phi_3468_;
+                                                                                    let _e2665 = phi_3469_;
+                                                                                    phi_3470_ = _e2663;
+                                                                                    phi_3471_ = _e2665;
                                                                                 }
-                                                                                let _e2667 = phi_3379_;
-                                                                                let _e2669 = phi_3380_;
-                                                                                phi_3381_ = _e2667;
-                                                                                phi_3382_ = _e2669;
+                                                                                let _e2667 = phi_3470_;
+                                                                                let _e2669 = phi_3471_;
+                                                                                phi_3472_ = _e2667;
+                                                                                phi_3473_ = _e2669;
                                                                             }
-                                                                            let _e2671 = phi_3381_;
-                                                                            let _e2673 = phi_3382_;
+                                                                            let _e2671 = phi_3472_;
+                                                                            let _e2673 = phi_3473_;
                                                                             let _e2675 = local_286;
                                                                             let _e2677 = local_298;
                                                                             let _e2679 = local_287;
                                                                             let _e2681 = local_295;
                                                                             let _e2683 = local_287;
-                                                                            phi_3393_ = ((_e2681 * (1f - _e2679)) + ((_e2677 + (select(_e2671, 0f, _e2673) * _e2675)) * _e2683));
+                                                                            phi_3484_ = ((_e2681 * (1f - _e2679)) + ((_e2677 + (select(_e2671, 0f, _e2673) * _e2675)) * _e2683));
                                                                         } else {
-                                                                            phi_3393_ = f32();
+                                                                            phi_3484_ = f32();
                                                                         }
-                                                                        let _e2687 = phi_3393_;
+                                                                        let _e2687 = phi_3484_;
                                                                         let _e2688 = local_283;
-                                                                        phi_3395_ = _e2687;
-                                                                        phi_3396_ = select(true, false, _e2688);
+                                                                        phi_3486_ = _e2687;
+                                                                        phi_3487_ = select(true, false, _e2688);
                                                                     } else {
-                                                                        phi_3395_ = f32();
-                                                                        phi_3396_ = true;
+                                                                        phi_3486_ = f32();
+                                                                        phi_3487_ = true;
                                                                     }
-                                                                    let _e2691 = phi_3395_;
-                                                                    let _e2693 = phi_3396_;
-                                                                    phi_3397_ = _e2691;
-                                                                    phi_3398_ = _e2693;
+                                                                    let _e2691 = phi_3486_;
+                                                                    let _e2693 = phi_3487_;
+                                                                    phi_3488_ = _e2691;
+                                                                    phi_3489_ = _e2693;
                                                                 } else {
-                                                                    phi_3397_ = f32();
-                                                                    phi_3398_ = true;
+                                                                    phi_3488_ = f32();
+                                                                    phi_3489_ = true;
                                                                 }
-                                                                let _e2695 = phi_3397_;
-                                                                let _e2697 = phi_3398_;
-                                                                phi_3399_ = _e2695;
-                                                                phi_3400_ = _e2697;
+                                                                let _e2695 = phi_3488_;
+                                                                let _e2697 = phi_3489_;
+                                                                phi_3490_ = _e2695;
+                                                                phi_3491_ = _e2697;
                                                             } else {
-                                                                phi_3399_ = f32();
-                                                                phi_3400_ = true;
+                                                                phi_3490_ = f32();
+                                                                phi_3491_ = true;
                                                             }
-                                                            let _e2699 = phi_3399_;
-                                                            let _e2701 = phi_3400_;
-                                                            phi_3405_ = select(_e2699, 0f, _e2701);
+                                                            let _e2699 = phi_3490_;
+                                                            let _e2701 = phi_3491_;
+                                                            phi_3496_ = select(_e2699, 0f, _e2701);
                                                         } else {
-                                                            phi_3405_ = 0f;
+                                                            phi_3496_ = 0f;
                                                         }
-                                                        let _e2704 = phi_3405_;
-                                                        phi_3498_ = _e2704;
+                                                        let _e2704 = phi_3496_;
+                                                        phi_3589_ = _e2704;
                                                     } else {
                                                         let _e2335 = local_277;
                                                         let _e2336 = local_277;
@@ -3696,19 +3696,19 @@ fn function_() {
                                                         local_300 = _e2342;
                                                         let _e2343 = local_274;
                                                         if _e2343 {
-                                                            phi_3485_ = _e2342;
+                                                            phi_3576_ = _e2342;
                                                         } else {
                                                             let _e2344 = local_27;
                                                             let _e2346 = local_277;
                                                             let _e2348 = local_27;
                                                             let _e2350 = local_278;
-                                                            phi_3427_ = 1u;
-                                                            phi_3430_ = ((_e2346 * _e2344[0]) + (_e2350 * _e2348[1]));
-                                                            phi_3432_ = _e617.member_16.member_2;
+                                                            phi_3518_ = 1u;
+                                                            phi_3521_ = ((_e2346 * _e2344[0]) + (_e2350 * _e2348[1]));
+                                                            phi_3523_ = _e617.member_16.member_2;
                                                             loop {
-                                                                let _e2354 = phi_3427_;
-                                                                let _e2356 = phi_3430_;
-                                                                let _e2358 = phi_3432_;
+                                                                let _e2354 = phi_3518_;
+                                                                let _e2356 = phi_3521_;
+                                                                let _e2358 = phi_3523_;
                                                                 local_301 = _e2354;
                                                                 local_302 = _e2356;
                                                                 local_303 = _e2358;
@@ -3731,23 +3731,23 @@ fn function_() {
                                                                     let _e2382 = local_302;
                                                                     let _e2384 = local_302;
                                                                     let _e2386 = local_301;
-                                                                    phi_3428_ = (_e2386 + 1u);
-                                                                    phi_3431_ = select(_e2384, _e2381, (_e2381 > _e2382));
-                                                                    phi_3433_ = array<f32, 2>(_e2370, _e2375);
+                                                                    phi_3519_ = (_e2386 + 1u);
+                                                                    phi_3522_ = select(_e2384, _e2381, (_e2381 > _e2382));
+                                                                    phi_3524_ = array<f32, 2>(_e2370, _e2375);
                                                                 } else {
-                                                                    phi_3428_ = u32();
-                                                                    phi_3431_ = f32();
-                                                                    phi_3433_ = array<f32, 2>();
+                                                                    phi_3519_ = u32();
+                                                                    phi_3522_ = f32();
+                                                                    phi_3524_ = array<f32, 2>();
                                                                 }
-                                                                let _e2389 = phi_3428_;
-                                                                let _e2391 = phi_3431_;
-                                                                let _e2393 = phi_3433_;
+                                                                let _e2389 = phi_3519_;
+                                                                let _e2391 = phi_3522_;
+                                                                let _e2393 = phi_3524_;
                                                                 continue;
                                                                 continuing {
                                                                     let _e2394 = local_304;
-                                                                    phi_3427_ = _e2389;
-                                                                    phi_3430_ = _e2391;
-                                                                    phi_3432_ = _e2393;
+                                                                    phi_3518_ = _e2389;
+                                                                    phi_3521_ = _e2391;
+                                                                    phi_3523_ = _e2393;
                                                                     break if !(_e2394);
                                                                 }
                                                             }
@@ -3756,33 +3756,33 @@ fn function_() {
                                                             let _e2400 = local_30;
                                                             let _e2402 = local_26;
                                                             let _e2403 = local_300;
-                                                            phi_3485_ = ((((1f - _e2396) * _e2398) * _e2400) + (_e2402 * _e2403));
+                                                            phi_3576_ = ((((1f - _e2396) * _e2398) * _e2400) + (_e2402 * _e2403));
                                                         }
-                                                        let _e2407 = phi_3485_;
+                                                        let _e2407 = phi_3576_;
                                                         let _e2408 = local_242;
                                                         let _e2410 = local_250;
                                                         let _e2411 = ((_e2408 - _e2407) / _e2410);
-                                                        phi_3498_ = select(0f, select(1f, _e2411, (_e2411 < 1f)), (0f < _e2411));
+                                                        phi_3589_ = select(0f, select(1f, _e2411, (_e2411 < 1f)), (0f < _e2411));
                                                     }
-                                                    let _e2706 = phi_3498_;
-                                                    phi_3499_ = _e2706;
+                                                    let _e2706 = phi_3589_;
+                                                    phi_3590_ = _e2706;
                                                 }
-                                                let _e2728 = phi_3499_;
-                                                phi_3500_ = _e2728;
+                                                let _e2728 = phi_3590_;
+                                                phi_3591_ = _e2728;
                                             }
-                                            let _e2750 = phi_3500_;
-                                            phi_4986_ = _e2237;
-                                            phi_3501_ = _e2750;
+                                            let _e2750 = phi_3591_;
+                                            phi_5178_ = _e2237;
+                                            phi_3592_ = _e2750;
                                         }
-                                        let _e3297 = phi_4986_;
-                                        let _e3299 = phi_3501_;
+                                        let _e3297 = phi_5178_;
+                                        let _e3299 = phi_3592_;
                                         local_305 = _e3299;
                                         let _e3300 = local_230;
                                         let _e3301 = (2304u + _e3300);
                                         local_306 = _e3301;
                                         if (_e3301 < 5888u) {
                                         } else {
-                                            phi_4964_ = true;
+                                            phi_5156_ = true;
                                             break;
                                         }
                                         let _e3303 = local_306;
@@ -3794,7 +3794,7 @@ fn function_() {
                                         local_308 = _e3310;
                                         if (_e3310 < 5888u) {
                                         } else {
-                                            phi_4964_ = true;
+                                            phi_5156_ = true;
                                             break;
                                         }
                                         let _e3312 = local_308;
@@ -3809,7 +3809,7 @@ fn function_() {
                                             local_310 = _e3343;
                                             if (_e3343 < 5888u) {
                                             } else {
-                                                phi_4964_ = true;
+                                                phi_5156_ = true;
                                                 break;
                                             }
                                             let _e3345 = local_310;
@@ -3843,7 +3843,7 @@ fn function_() {
                                             if _e3380 {
                                                 let _e3381 = local_251;
                                                 if _e3381 {
-                                                    phi_3596_ = type_18();
+                                                    phi_3687_ = type_18();
                                                 } else {
                                                     let _e3382 = local_317;
                                                     let _e3383 = local_449;
@@ -3857,26 +3857,26 @@ fn function_() {
                                                     local_324 = (_e3388 < _e3389);
                                                     let _e3391 = local_309;
                                                     if (_e3391 == 1f) {
-                                                        phi_3586_ = _e3350;
+                                                        phi_3677_ = _e3350;
                                                     } else {
                                                         let _e3393 = local_312;
                                                         let _e3394 = local_309;
-                                                        phi_3586_ = (_e3393 / _e3394);
+                                                        phi_3677_ = (_e3393 / _e3394);
                                                     }
-                                                    let _e3397 = phi_3586_;
+                                                    let _e3397 = phi_3677_;
                                                     let _e3398 = local_324;
                                                     let _e3399 = local_322;
                                                     let _e3401 = local_324;
                                                     let _e3402 = local_323;
                                                     let _e3403 = local_312;
-                                                    phi_3596_ = type_18(select(_e3397, _e3399, _e3398), select(_e3403, _e3402, _e3401));
+                                                    phi_3687_ = type_18(select(_e3397, _e3399, _e3398), select(_e3403, _e3402, _e3401));
                                                 }
-                                                let _e3407 = phi_3596_;
-                                                phi_3597_ = _e3407;
+                                                let _e3407 = phi_3687_;
+                                                phi_3688_ = _e3407;
                                             } else {
-                                                phi_3597_ = type_18();
+                                                phi_3688_ = type_18();
                                             }
-                                            let _e3409 = phi_3597_;
+                                            let _e3409 = phi_3688_;
                                             let _e3410 = local_321;
                                             let _e3411 = local_251;
                                             let _e3412 = select(true, _e3411, _e3410);
@@ -3890,23 +3890,23 @@ fn function_() {
                                                 local_326 = (_e3415 < _e3416);
                                                 let _e3418 = local_309;
                                                 if (_e3418 == 1f) {
-                                                    phi_3609_ = _e3350;
+                                                    phi_3700_ = _e3350;
                                                 } else {
                                                     let _e3420 = local_312;
                                                     let _e3421 = local_309;
-                                                    phi_3609_ = (_e3420 / _e3421);
+                                                    phi_3700_ = (_e3420 / _e3421);
                                                 }
-                                                let _e3424 = phi_3609_;
+                                                let _e3424 = phi_3700_;
                                                 let _e3425 = local_326;
                                                 let _e3426 = local_307;
                                                 let _e3428 = local_326;
                                                 let _e3429 = local_325;
                                                 let _e3430 = local_312;
-                                                phi_3620_ = type_18(select(_e3424, _e3426, _e3425), select(_e3430, _e3429, _e3428));
+                                                phi_3711_ = type_18(select(_e3424, _e3426, _e3425), select(_e3430, _e3429, _e3428));
                                             } else {
-                                                phi_3620_ = _e3409;
+                                                phi_3711_ = _e3409;
                                             }
-                                            let _e3434 = phi_3620_;
+                                            let _e3434 = phi_3711_;
                                             let _e3435 = local_450;
                                             let _e3436 = local_318;
                                             let _e3438 = local_246;
@@ -3925,8 +3925,8 @@ fn function_() {
                                             let _e3457 = local_246;
                                             let _e3458 = local_317;
                                             let _e3460 = local_316;
-                                            phi_3672_ = type_31(select(_e3440, _e3439, _e3438), select(_e3444, _e3443, _e3442), select(_e3448, _e3447, _e3446), ((_e3450 && select(_e3436, true, _e3435)) || (_e3453 && _e3454)), ((_e3457 && _e3458) || (_e3453 && _e3460)));
-                                            phi_3673_ = _e3434;
+                                            phi_3763_ = type_31(select(_e3440, _e3439, _e3438), select(_e3444, _e3443, _e3442), select(_e3448, _e3447, _e3446), ((_e3450 && select(_e3436, true, _e3435)) || (_e3453 && _e3454)), ((_e3457 && _e3458) || (_e3453 && _e3460)));
+                                            phi_3764_ = _e3434;
                                         } else {
                                             let _e3321 = local_228;
                                             let _e3322 = (1f - _e3321);
@@ -3938,23 +3938,23 @@ fn function_() {
                                             local_329 = (_e3325 < _e3322);
                                             let _e3327 = local_309;
                                             if (_e3327 == 1f) {
-                                                phi_3662_ = _e3322;
+                                                phi_3753_ = _e3322;
                                             } else {
                                                 let _e3329 = local_327;
                                                 let _e3330 = local_309;
-                                                phi_3662_ = (_e3329 / _e3330);
+                                                phi_3753_ = (_e3329 / _e3330);
                                             }
-                                            let _e3333 = phi_3662_;
+                                            let _e3333 = phi_3753_;
                                             let _e3334 = local_329;
                                             let _e3335 = local_307;
                                             let _e3337 = local_329;
                                             let _e3338 = local_328;
                                             let _e3339 = local_327;
-                                            phi_3672_ = _e2241;
-                                            phi_3673_ = type_18(select(_e3333, _e3335, _e3334), select(_e3339, _e3338, _e3337));
+                                            phi_3763_ = _e2241;
+                                            phi_3764_ = type_18(select(_e3333, _e3335, _e3334), select(_e3339, _e3338, _e3337));
                                         }
-                                        let _e3465 = phi_3672_;
-                                        let _e3467 = phi_3673_;
+                                        let _e3465 = phi_3763_;
+                                        let _e3467 = phi_3764_;
                                         local_330 = _e3467.member;
                                         local_331 = _e3467.member_1;
                                         let _e3470 = local_235;
@@ -3964,7 +3964,7 @@ fn function_() {
                                         local_333 = _e3473;
                                         if (_e3473 < 5888u) {
                                         } else {
-                                            phi_4964_ = true;
+                                            phi_5156_ = true;
                                             break;
                                         }
                                         let _e3475 = local_333;
@@ -3981,7 +3981,7 @@ fn function_() {
                                         local_335 = _e3489;
                                         if (_e3489 < 5888u) {
                                         } else {
-                                            phi_4964_ = true;
+                                            phi_5156_ = true;
                                             break;
                                         }
                                         let _e3491 = local_335;
@@ -3998,7 +3998,7 @@ fn function_() {
                                         local_337 = _e3505;
                                         if (_e3505 < 5888u) {
                                         } else {
-                                            phi_4964_ = true;
+                                            phi_5156_ = true;
                                             break;
                                         }
                                         let _e3507 = local_337;
@@ -4026,102 +4026,102 @@ fn function_() {
                                             let _e3540 = local_338;
                                             let _e3541 = local_232;
                                             let _e3542 = select(_e3541, 0f, _e3540);
-                                            phi_3758_ = select(select(u32(_e3542), 0u, !((_e3542 >= 0f))), 4294967295u, (_e3542 > 4294967000f));
-                                            phi_3759_ = _e3542;
-                                            phi_3760_ = select(_e3538, f32((_e3534 + 1u)), _e3537);
-                                            phi_3761_ = (_e3531 || _e3532);
+                                            phi_3849_ = select(select(u32(_e3542), 0u, !((_e3542 >= 0f))), 4294967295u, (_e3542 > 4294967000f));
+                                            phi_3850_ = _e3542;
+                                            phi_3851_ = select(_e3538, f32((_e3534 + 1u)), _e3537);
+                                            phi_3852_ = (_e3531 || _e3532);
                                         } else {
-                                            phi_3758_ = _e2245;
-                                            phi_3759_ = _e2247;
-                                            phi_3760_ = _e2249;
-                                            phi_3761_ = _e2251;
+                                            phi_3849_ = _e2245;
+                                            phi_3850_ = _e2247;
+                                            phi_3851_ = _e2249;
+                                            phi_3852_ = _e2251;
                                         }
-                                        let _e3550 = phi_3758_;
-                                        let _e3552 = phi_3759_;
-                                        let _e3554 = phi_3760_;
-                                        let _e3556 = phi_3761_;
-                                        phi_4966_ = _e3297;
-                                        phi_3762_ = _e3526;
-                                        phi_3763_ = _e3465;
-                                        phi_3764_ = _e3550;
-                                        phi_3765_ = _e3552;
-                                        phi_3766_ = _e3554;
-                                        phi_3767_ = _e3556;
-                                        phi_3768_ = array<f32, 3>(_e3518, _e3519, select(_e3516, (_e3513 + (_e3511 * bitcast<f32>(_e3509))), _e3515));
+                                        let _e3550 = phi_3849_;
+                                        let _e3552 = phi_3850_;
+                                        let _e3554 = phi_3851_;
+                                        let _e3556 = phi_3852_;
+                                        phi_5158_ = _e3297;
+                                        phi_3853_ = _e3526;
+                                        phi_3854_ = _e3465;
+                                        phi_3855_ = _e3550;
+                                        phi_3856_ = _e3552;
+                                        phi_3857_ = _e3554;
+                                        phi_3858_ = _e3556;
+                                        phi_3859_ = array<f32, 3>(_e3518, _e3519, select(_e3516, (_e3513 + (_e3511 * bitcast<f32>(_e3509))), _e3515));
                                     } else {
-                                        phi_4966_ = _e2237;
-                                        phi_3762_ = _e2239;
-                                        phi_3763_ = _e2241;
-                                        phi_3764_ = _e2245;
-                                        phi_3765_ = _e2247;
-                                        phi_3766_ = _e2249;
-                                        phi_3767_ = _e2251;
-                                        phi_3768_ = _e2253;
+                                        phi_5158_ = _e2237;
+                                        phi_3853_ = _e2239;
+                                        phi_3854_ = _e2241;
+                                        phi_3855_ = _e2245;
+                                        phi_3856_ = _e2247;
+                                        phi_3857_ = _e2249;
+                                        phi_3858_ = _e2251;
+                                        phi_3859_ = _e2253;
                                     }
-                                    let _e3558 = phi_4966_;
-                                    let _e3560 = phi_3762_;
-                                    let _e3562 = phi_3763_;
-                                    let _e3564 = phi_3764_;
-                                    let _e3566 = phi_3765_;
-                                    let _e3568 = phi_3766_;
-                                    let _e3570 = phi_3767_;
-                                    let _e3572 = phi_3768_;
+                                    let _e3558 = phi_5158_;
+                                    let _e3560 = phi_3853_;
+                                    let _e3562 = phi_3854_;
+                                    let _e3564 = phi_3855_;
+                                    let _e3566 = phi_3856_;
+                                    let _e3568 = phi_3857_;
+                                    let _e3570 = phi_3858_;
+                                    let _e3572 = phi_3859_;
                                     let _e3573 = local_230;
-                                    phi_4965_ = _e3558;
-                                    phi_2067_ = _e3560;
-                                    phi_2070_ = _e3562;
-                                    phi_2072_ = (_e3573 + 1u);
-                                    phi_2074_ = _e3564;
-                                    phi_2076_ = _e3566;
-                                    phi_2078_ = _e3568;
-                                    phi_2080_ = _e3570;
-                                    phi_2082_ = _e3572;
+                                    phi_5157_ = _e3558;
+                                    phi_2158_ = _e3560;
+                                    phi_2161_ = _e3562;
+                                    phi_2163_ = (_e3573 + 1u);
+                                    phi_2165_ = _e3564;
+                                    phi_2167_ = _e3566;
+                                    phi_2169_ = _e3568;
+                                    phi_2171_ = _e3570;
+                                    phi_2173_ = _e3572;
                                 } else {
-                                    phi_4965_ = _e2237;
-                                    phi_2067_ = f32();
-                                    phi_2070_ = type_31();
-                                    phi_2072_ = u32();
-                                    phi_2074_ = u32();
-                                    phi_2076_ = f32();
-                                    phi_2078_ = f32();
-                                    phi_2080_ = bool();
-                                    phi_2082_ = array<f32, 3>();
+                                    phi_5157_ = _e2237;
+                                    phi_2158_ = f32();
+                                    phi_2161_ = type_31();
+                                    phi_2163_ = u32();
+                                    phi_2165_ = u32();
+                                    phi_2167_ = f32();
+                                    phi_2169_ = f32();
+                                    phi_2171_ = bool();
+                                    phi_2173_ = array<f32, 3>();
                                 }
-                                let _e3576 = phi_4965_;
-                                let _e3578 = phi_2067_;
-                                let _e3580 = phi_2070_;
-                                let _e3582 = phi_2072_;
-                                let _e3584 = phi_2074_;
-                                let _e3586 = phi_2076_;
-                                let _e3588 = phi_2078_;
-                                let _e3590 = phi_2080_;
-                                let _e3592 = phi_2082_;
+                                let _e3576 = phi_5157_;
+                                let _e3578 = phi_2158_;
+                                let _e3580 = phi_2161_;
+                                let _e3582 = phi_2163_;
+                                let _e3584 = phi_2165_;
+                                let _e3586 = phi_2167_;
+                                let _e3588 = phi_2169_;
+                                let _e3590 = phi_2171_;
+                                let _e3592 = phi_2173_;
                                 continue;
                                 continuing {
                                     let _e3593 = local_236;
-                                    phi_4863_ = _e3576;
-                                    phi_2066_ = _e3578;
-                                    phi_2069_ = _e3580;
-                                    phi_2071_ = _e3582;
-                                    phi_2073_ = _e3584;
-                                    phi_2075_ = _e3586;
-                                    phi_2077_ = _e3588;
-                                    phi_2079_ = _e3590;
-                                    phi_2081_ = _e3592;
-                                    phi_4964_ = _e3576;
+                                    phi_5055_ = _e3576;
+                                    phi_2157_ = _e3578;
+                                    phi_2160_ = _e3580;
+                                    phi_2162_ = _e3582;
+                                    phi_2164_ = _e3584;
+                                    phi_2166_ = _e3586;
+                                    phi_2168_ = _e3588;
+                                    phi_2170_ = _e3590;
+                                    phi_2172_ = _e3592;
+                                    phi_5156_ = _e3576;
                                     break if !(_e3593);
                                 }
                             }
-                            let _e3596 = phi_4964_;
-                            phi_5068_ = _e3596;
+                            let _e3596 = phi_5156_;
+                            phi_5278_ = _e3596;
                             if _e3596 {
                                 break;
                             }
                             let _e3597 = local_235;
                             local_339 = _e3597[0];
-                            phi_3772_ = 0u;
+                            phi_3863_ = 0u;
                             loop {
-                                let _e3600 = phi_3772_;
+                                let _e3600 = phi_3863_;
                                 local_340 = _e3600;
                                 let _e3601 = local_340;
                                 let _e3602 = (_e3601 < 1u);
@@ -4135,36 +4135,36 @@ fn function_() {
                                     local_343 = bitcast<u32>(_e3606);
                                     if (_e3605 < 5888u) {
                                     } else {
-                                        phi_5040_ = true;
+                                        phi_5232_ = true;
                                         break;
                                     }
                                     let _e3609 = local_342;
                                     let _e3611 = local_343;
                                     global_11[_e3609] = _e3611;
                                     let _e3612 = local_340;
-                                    phi_3773_ = (_e3612 + 1u);
+                                    phi_3864_ = (_e3612 + 1u);
                                 } else {
-                                    phi_3773_ = u32();
+                                    phi_3864_ = u32();
                                 }
-                                let _e3615 = phi_3773_;
+                                let _e3615 = phi_3864_;
                                 continue;
                                 continuing {
                                     let _e3616 = local_341;
-                                    phi_3772_ = _e3615;
-                                    phi_5040_ = _e3596;
+                                    phi_3863_ = _e3615;
+                                    phi_5232_ = _e3596;
                                     break if !(_e3616);
                                 }
                             }
-                            let _e3619 = phi_5040_;
-                            phi_5068_ = _e3619;
+                            let _e3619 = phi_5232_;
+                            phi_5278_ = _e3619;
                             if _e3619 {
                                 break;
                             }
                             let _e3620 = local_235;
                             local_344 = _e3620[1];
-                            phi_3793_ = 0u;
+                            phi_3884_ = 0u;
                             loop {
-                                let _e3623 = phi_3793_;
+                                let _e3623 = phi_3884_;
                                 local_345 = _e3623;
                                 let _e3624 = local_345;
                                 let _e3625 = (_e3624 < 1u);
@@ -4178,36 +4178,36 @@ fn function_() {
                                     local_348 = _e3631;
                                     if (_e3631 < 5888u) {
                                     } else {
-                                        phi_5043_ = true;
+                                        phi_5235_ = true;
                                         break;
                                     }
                                     let _e3633 = local_348;
                                     let _e3635 = local_347;
                                     global_11[_e3633] = _e3635;
                                     let _e3636 = local_345;
-                                    phi_3794_ = (_e3636 + 1u);
+                                    phi_3885_ = (_e3636 + 1u);
                                 } else {
-                                    phi_3794_ = u32();
+                                    phi_3885_ = u32();
                                 }
-                                let _e3639 = phi_3794_;
+                                let _e3639 = phi_3885_;
                                 continue;
                                 continuing {
                                     let _e3640 = local_346;
-                                    phi_3793_ = _e3639;
-                                    phi_5043_ = _e3619;
+                                    phi_3884_ = _e3639;
+                                    phi_5235_ = _e3619;
                                     break if !(_e3640);
                                 }
                             }
-                            let _e3643 = phi_5043_;
-                            phi_5068_ = _e3643;
+                            let _e3643 = phi_5235_;
+                            phi_5278_ = _e3643;
                             if _e3643 {
                                 break;
                             }
                             let _e3644 = local_235;
                             local_349 = _e3644[2];
-                            phi_3814_ = 0u;
+                            phi_3905_ = 0u;
                             loop {
-                                let _e3647 = phi_3814_;
+                                let _e3647 = phi_3905_;
                                 local_350 = _e3647;
                                 let _e3648 = local_350;
                                 let _e3649 = (_e3648 < 1u);
@@ -4221,34 +4221,34 @@ fn function_() {
                                     local_353 = _e3655;
                                     if (_e3655 < 5888u) {
                                     } else {
-                                        phi_5046_ = true;
+                                        phi_5238_ = true;
                                         break;
                                     }
                                     let _e3657 = local_353;
                                     let _e3659 = local_352;
                                     global_11[_e3657] = _e3659;
                                     let _e3660 = local_350;
-                                    phi_3815_ = (_e3660 + 1u);
+                                    phi_3906_ = (_e3660 + 1u);
                                 } else {
-                                    phi_3815_ = u32();
+                                    phi_3906_ = u32();
                                 }
-                                let _e3663 = phi_3815_;
+                                let _e3663 = phi_3906_;
                                 continue;
                                 continuing {
                                     let _e3664 = local_351;
-                                    phi_3814_ = _e3663;
-                                    phi_5046_ = _e3643;
+                                    phi_3905_ = _e3663;
+                                    phi_5238_ = _e3643;
                                     break if !(_e3664);
                                 }
                             }
-                            let _e3667 = phi_5046_;
-                            phi_5068_ = _e3667;
+                            let _e3667 = phi_5238_;
+                            phi_5278_ = _e3667;
                             if _e3667 {
                                 break;
                             }
-                            phi_3834_ = 0u;
+                            phi_3925_ = 0u;
                             loop {
-                                let _e3669 = phi_3834_;
+                                let _e3669 = phi_3925_;
                                 local_354 = _e3669;
                                 let _e3670 = local_354;
                                 let _e3671 = (_e3670 < 1u);
@@ -4262,34 +4262,34 @@ fn function_() {
                                     local_357 = _e3677;
                                     if (_e3677 < 5888u) {
                                     } else {
-                                        phi_5049_ = true;
+                                        phi_5241_ = true;
                                         break;
                                     }
                                     let _e3679 = local_357;
                                     let _e3681 = local_356;
                                     global_11[_e3679] = _e3681;
                                     let _e3682 = local_354;
-                                    phi_3835_ = (_e3682 + 1u);
+                                    phi_3926_ = (_e3682 + 1u);
                                 } else {
-                                    phi_3835_ = u32();
+                                    phi_3926_ = u32();
                                 }
-                                let _e3685 = phi_3835_;
+                                let _e3685 = phi_3926_;
                                 continue;
                                 continuing {
                                     let _e3686 = local_355;
-                                    phi_3834_ = _e3685;
-                                    phi_5049_ = _e3667;
+                                    phi_3925_ = _e3685;
+                                    phi_5241_ = _e3667;
                                     break if !(_e3686);
                                 }
                             }
-                            let _e3689 = phi_5049_;
-                            phi_5068_ = _e3689;
+                            let _e3689 = phi_5241_;
+                            phi_5278_ = _e3689;
                             if _e3689 {
                                 break;
                             }
-                            phi_3855_ = 0u;
+                            phi_3946_ = 0u;
                             loop {
-                                let _e3691 = phi_3855_;
+                                let _e3691 = phi_3946_;
                                 local_358 = _e3691;
                                 let _e3692 = local_358;
                                 let _e3693 = (_e3692 < 1u);
@@ -4303,7 +4303,7 @@ fn function_() {
                                     local_361 = _e3699;
                                     if (_e3699 < 5888u) {
                                     } else {
-                                        phi_5052_ = true;
+                                        phi_5244_ = true;
                                         break;
                                     }
                                     let _e3701 = local_361;
@@ -4317,7 +4317,7 @@ fn function_() {
                                     local_363 = _e3709;
                                     if (_e3709 < 5888u) {
                                     } else {
-                                        phi_5052_ = true;
+                                        phi_5244_ = true;
                                         break;
                                     }
                                     let _e3711 = local_363;
@@ -4331,7 +4331,7 @@ fn function_() {
                                     local_365 = _e3719;
                                     if (_e3719 < 5888u) {
                                     } else {
-                                        phi_5052_ = true;
+                                        phi_5244_ = true;
                                         break;
                                     }
                                     let _e3721 = local_365;
@@ -4347,7 +4347,7 @@ fn function_() {
                                     local_368 = _e3734;
                                     if (_e3734 < 5888u) {
                                     } else {
-                                        phi_5052_ = true;
+                                        phi_5244_ = true;
                                         break;
                                     }
                                     let _e3736 = local_368;
@@ -4355,27 +4355,27 @@ fn function_() {
                                     let _e3739 = local_367;
                                     global_11[_e3736] = (_e3738 | _e3739);
                                     let _e3741 = local_358;
-                                    phi_3856_ = (_e3741 + 1u);
+                                    phi_3947_ = (_e3741 + 1u);
                                 } else {
-                                    phi_3856_ = u32();
+                                    phi_3947_ = u32();
                                 }
-                                let _e3744 = phi_3856_;
+                                let _e3744 = phi_3947_;
                                 continue;
                                 continuing {
                                     let _e3745 = local_359;
-                                    phi_3855_ = _e3744;
-                                    phi_5052_ = _e3689;
+                                    phi_3946_ = _e3744;
+                                    phi_5244_ = _e3689;
                                     break if !(_e3745);
                                 }
                             }
-                            let _e3748 = phi_5052_;
-                            phi_5068_ = _e3748;
+                            let _e3748 = phi_5244_;
+                            phi_5278_ = _e3748;
                             if _e3748 {
                                 break;
                             }
-                            phi_3911_ = 0u;
+                            phi_4002_ = 0u;
                             loop {
-                                let _e3750 = phi_3911_;
+                                let _e3750 = phi_4002_;
                                 local_369 = _e3750;
                                 let _e3751 = local_369;
                                 let _e3752 = (_e3751 < 1u);
@@ -4389,13 +4389,13 @@ fn function_() {
                                         let _e3780 = local_233;
                                         let _e3782 = local_233;
                                         let _e3785 = local_233;
-                                        phi_3971_ = false;
-                                        phi_3972_ = select(select(u32(_e3780), 0u, !((_e3782 >= 0f))), 4294967295u, (_e3785 > 4294967000f));
+                                        phi_4062_ = false;
+                                        phi_4063_ = select(select(u32(_e3780), 0u, !((_e3782 >= 0f))), 4294967295u, (_e3785 > 4294967000f));
                                     } else {
                                         let _e3757 = local_370;
                                         if _e3757 {
                                         } else {
-                                            phi_5055_ = true;
+                                            phi_5247_ = true;
                                             break;
                                         }
                                         let _e3758 = local_369;
@@ -4404,7 +4404,7 @@ fn function_() {
                                             let _e3761 = local_370;
                                             if _e3761 {
                                             } else {
-                                                phi_5055_ = true;
+                                                phi_5247_ = true;
                                                 break;
                                             }
                                             let _e3762 = local_369;
@@ -4414,42 +4414,42 @@ fn function_() {
                                                 let _e3767 = local_370;
                                                 if _e3767 {
                                                 } else {
-                                                    phi_5055_ = true;
+                                                    phi_5247_ = true;
                                                     break;
                                                 }
                                                 let _e3768 = local_458[_e3762];
-                                                phi_3960_ = (_e3768 + 1u);
+                                                phi_4051_ = (_e3768 + 1u);
                                             } else {
-                                                phi_3960_ = _e1992;
+                                                phi_4051_ = _e1992;
                                             }
-                                            let _e3771 = phi_3960_;
+                                            let _e3771 = phi_4051_;
                                             let _e3772 = local_370;
                                             if _e3772 {
                                             } else {
-                                                phi_5055_ = true;
+                                                phi_5247_ = true;
                                                 break;
                                             }
                                             let _e3773 = local_458[_e3762];
                                             let _e3774 = local_447;
-                                            phi_3969_ = (_e3773 == _e3774);
-                                            phi_3970_ = _e3771;
+                                            phi_4060_ = (_e3773 == _e3774);
+                                            phi_4061_ = _e3771;
                                         } else {
-                                            phi_3969_ = false;
-                                            phi_3970_ = 0u;
+                                            phi_4060_ = false;
+                                            phi_4061_ = 0u;
                                         }
-                                        let _e3777 = phi_3969_;
-                                        let _e3779 = phi_3970_;
-                                        phi_3971_ = _e3777;
-                                        phi_3972_ = _e3779;
+                                        let _e3777 = phi_4060_;
+                                        let _e3779 = phi_4061_;
+                                        phi_4062_ = _e3777;
+                                        phi_4063_ = _e3779;
                                     }
-                                    let _e3790 = phi_3971_;
-                                    let _e3792 = phi_3972_;
+                                    let _e3790 = phi_4062_;
+                                    let _e3792 = phi_4063_;
                                     local_372 = _e3790;
                                     local_373 = _e3792;
                                     let _e3793 = local_370;
                                     if _e3793 {
                                     } else {
-                                        phi_5055_ = true;
+                                        phi_5247_ = true;
                                         break;
                                     }
                                     let _e3794 = local_369;
@@ -4460,7 +4460,7 @@ fn function_() {
                                         local_374 = _e3798;
                                         if (_e3798 < 5888u) {
                                         } else {
-                                            phi_5055_ = true;
+                                            phi_5247_ = true;
                                             break;
                                         }
                                         let _e3800 = local_374;
@@ -4473,36 +4473,36 @@ fn function_() {
                                     local_375 = _e3806;
                                     if (_e3806 < 5888u) {
                                     } else {
-                                        phi_5055_ = true;
+                                        phi_5247_ = true;
                                         break;
                                     }
                                     let _e3808 = local_375;
                                     let _e3810 = local_372;
                                     global_11[_e3808] = select(0u, 1u, _e3810);
                                     let _e3812 = local_369;
-                                    phi_3912_ = (_e3812 + 1u);
+                                    phi_4003_ = (_e3812 + 1u);
                                 } else {
-                                    phi_3912_ = u32();
+                                    phi_4003_ = u32();
                                 }
-                                let _e3815 = phi_3912_;
+                                let _e3815 = phi_4003_;
                                 continue;
                                 continuing {
                                     let _e3816 = local_370;
-                                    phi_3911_ = _e3815;
-                                    phi_5055_ = _e3748;
+                                    phi_4002_ = _e3815;
+                                    phi_5247_ = _e3748;
                                     break if !(_e3816);
                                 }
                             }
-                            let _e3819 = phi_5055_;
-                            phi_5068_ = _e3819;
+                            let _e3819 = phi_5247_;
+                            phi_5278_ = _e3819;
                             if _e3819 {
                                 break;
                             }
                             storageBarrier();
                             workgroupBarrier();
-                            phi_4005_ = 128u;
+                            phi_4182_ = 128u;
                             loop {
-                                let _e3821 = phi_4005_;
+                                let _e3821 = phi_4182_;
                                 local_376 = _e3821;
                                 let _e3822 = local_376;
                                 let _e3823 = (_e3822 > 0u);
@@ -4514,7 +4514,7 @@ fn function_() {
                                         let _e3827 = local_55;
                                         if _e3827 {
                                         } else {
-                                            phi_5062_ = true;
+                                            phi_5254_ = true;
                                             break;
                                         }
                                         let _e3828 = global_11[_e853];
@@ -4525,7 +4525,7 @@ fn function_() {
                                         local_379 = _e3831;
                                         if (_e3831 < 5888u) {
                                         } else {
-                                            phi_5062_ = true;
+                                            phi_5254_ = true;
                                             break;
                                         }
                                         let _e3833 = local_379;
@@ -4536,7 +4536,7 @@ fn function_() {
                                         let _e3840 = local_55;
                                         if _e3840 {
                                         } else {
-                                            phi_5062_ = true;
+                                            phi_5254_ = true;
                                             break;
                                         }
                                         let _e3841 = local_453;
@@ -4545,21 +4545,21 @@ fn function_() {
                                     storageBarrier();
                                     workgroupBarrier();
                                     let _e3842 = local_376;
-                                    phi_4006_ = (_e3842 / 2u);
+                                    phi_4183_ = (_e3842 / 2u);
                                 } else {
-                                    phi_4006_ = u32();
+                                    phi_4183_ = u32();
                                 }
-                                let _e3845 = phi_4006_;
+                                let _e3845 = phi_4183_;
                                 continue;
                                 continuing {
                                     let _e3846 = local_377;
-                                    phi_4005_ = _e3845;
-                                    phi_5062_ = _e3819;
+                                    phi_4182_ = _e3845;
+                                    phi_5254_ = _e3819;
                                     break if !(_e3846);
                                 }
                             }
-                            let _e3849 = phi_5062_;
-                            phi_5068_ = _e3849;
+                            let _e3849 = phi_5254_;
+                            phi_5278_ = _e3849;
                             if _e3849 {
                                 break;
                             }
@@ -4567,40 +4567,40 @@ fn function_() {
                             storageBarrier();
                             workgroupBarrier();
                             let _e3851 = local_80;
-                            phi_5070_ = _e3849;
-                            phi_4050_ = (_e3851 + 256u);
-                            phi_4051_ = _e3850;
+                            phi_5280_ = _e3849;
+                            phi_4232_ = (_e3851 + 256u);
+                            phi_4233_ = _e3850;
                         }
-                        let _e3854 = phi_5070_;
-                        let _e3856 = phi_4050_;
-                        let _e3858 = phi_4051_;
+                        let _e3854 = phi_5280_;
+                        let _e3856 = phi_4232_;
+                        let _e3858 = phi_4233_;
                         let _e3859 = local_82;
-                        phi_5069_ = _e3854;
-                        phi_637_ = _e3856;
-                        phi_640_ = _e3858;
-                        phi_4053_ = select(true, false, _e3859);
+                        phi_5279_ = _e3854;
+                        phi_728_ = _e3856;
+                        phi_731_ = _e3858;
+                        phi_4235_ = select(true, false, _e3859);
                     } else {
-                        phi_5069_ = _e1014;
-                        phi_637_ = u32();
-                        phi_640_ = u32();
-                        phi_4053_ = false;
+                        phi_5279_ = _e1014;
+                        phi_728_ = u32();
+                        phi_731_ = u32();
+                        phi_4235_ = false;
                     }
-                    let _e3862 = phi_5069_;
-                    let _e3864 = phi_637_;
-                    let _e3866 = phi_640_;
-                    let _e3868 = phi_4053_;
+                    let _e3862 = phi_5279_;
+                    let _e3864 = phi_728_;
+                    let _e3866 = phi_731_;
+                    let _e3868 = phi_4235_;
                     local_380 = _e3868;
                     continue;
                     continuing {
                         let _e3869 = local_380;
-                        phi_4776_ = _e3862;
-                        phi_636_ = _e3864;
-                        phi_639_ = _e3866;
-                        phi_5068_ = _e3862;
+                        phi_4968_ = _e3862;
+                        phi_727_ = _e3864;
+                        phi_730_ = _e3866;
+                        phi_5278_ = _e3862;
                         break if !(_e3869);
                     }
                 }
-                let _e3872 = phi_5068_;
+                let _e3872 = phi_5278_;
                 if _e3872 {
                     break;
                 }
@@ -4621,20 +4621,20 @@ fn function_() {
                     if _e3878 {
                         let _e3879 = local_65;
                         let _e3880 = local_14;
-                        phi_4114_ = (_e3879 < _e3880);
+                        phi_4296_ = (_e3879 < _e3880);
                     } else {
-                        phi_4114_ = bool();
+                        phi_4296_ = bool();
                     }
-                    let _e3883 = phi_4114_;
+                    let _e3883 = phi_4296_;
                     let _e3884 = local_381;
-                    phi_4116_ = _e3883;
-                    phi_4117_ = select(true, false, _e3884);
+                    phi_4298_ = _e3883;
+                    phi_4299_ = select(true, false, _e3884);
                 } else {
-                    phi_4116_ = bool();
-                    phi_4117_ = true;
+                    phi_4298_ = bool();
+                    phi_4299_ = true;
                 }
-                let _e3887 = phi_4116_;
-                let _e3889 = phi_4117_;
+                let _e3887 = phi_4298_;
+                let _e3889 = phi_4299_;
                 if select(_e3887, false, _e3889) {
                     let _e3891 = local_65;
                     let _e3892 = local_13;
@@ -4789,11 +4789,11 @@ fn function_() {
                     local_403 = _e3996;
                     if (_e3996 > 0.000001f) {
                         let _e3998 = local_403;
-                        phi_4274_ = (1f / _e3998);
+                        phi_4456_ = (1f / _e3998);
                     } else {
-                        phi_4274_ = 0f;
+                        phi_4456_ = 0f;
                     }
-                    let _e4001 = phi_4274_;
+                    let _e4001 = phi_4456_;
                     local_404 = _e4001;
                     let _e4002 = local;
                     if (_e4002 < 5888u) {
@@ -4868,13 +4868,13 @@ fn function_() {
                 }
                 storageBarrier();
                 workgroupBarrier();
-                phi_4339_ = _e566;
-                phi_4342_ = 0u;
-                phi_4344_ = 0u;
+                phi_4521_ = _e566;
+                phi_4524_ = 0u;
+                phi_4526_ = 0u;
                 loop {
-                    let _e4059 = phi_4339_;
-                    let _e4061 = phi_4342_;
-                    let _e4063 = phi_4344_;
+                    let _e4059 = phi_4521_;
+                    let _e4061 = phi_4524_;
+                    let _e4063 = phi_4526_;
                     local_416 = _e4059;
                     local_417 = _e4061;
                     local_418 = _e4063;
@@ -4888,7 +4888,7 @@ fn function_() {
                         local_420 = _e4069;
                         if (_e4069 < 5888u) {
                         } else {
-                            phi_5071_ = true;
+                            phi_5283_ = true;
                             break;
                         }
                         let _e4071 = local_420;
@@ -4896,7 +4896,7 @@ fn function_() {
                         local_421 = _e4073;
                         let _e4074 = local_33;
                         if _e4074 {
-                            phi_5071_ = true;
+                            phi_5283_ = true;
                             break;
                         }
                         let _e4075 = local_416;
@@ -4905,7 +4905,7 @@ fn function_() {
                         local_422 = (_e4078 + (_e4075 % _e4076));
                         let _e4080 = local_33;
                         if _e4080 {
-                            phi_5071_ = true;
+                            phi_5283_ = true;
                             break;
                         }
                         let _e4081 = local_416;
@@ -4922,20 +4922,20 @@ fn function_() {
                             if _e4091 {
                                 let _e4092 = local_423;
                                 let _e4093 = local_14;
-                                phi_4417_ = (_e4092 < _e4093);
+                                phi_4599_ = (_e4092 < _e4093);
                             } else {
-                                phi_4417_ = bool();
+                                phi_4599_ = bool();
                             }
-                            let _e4096 = phi_4417_;
+                            let _e4096 = phi_4599_;
                             let _e4097 = local_424;
-                            phi_4419_ = _e4096;
-                            phi_4420_ = select(true, false, _e4097);
+                            phi_4601_ = _e4096;
+                            phi_4602_ = select(true, false, _e4097);
                         } else {
-                            phi_4419_ = bool();
-                            phi_4420_ = true;
+                            phi_4601_ = bool();
+                            phi_4602_ = true;
                         }
-                        let _e4100 = phi_4419_;
-                        let _e4102 = phi_4420_;
+                        let _e4100 = phi_4601_;
+                        let _e4102 = phi_4602_;
                         if select(_e4100, false, _e4102) {
                             let _e4104 = local_421;
                             let _e4105 = local_48;
@@ -4944,45 +4944,45 @@ fn function_() {
                                 let _e4109 = local_48;
                                 let _e4110 = local_421;
                                 let _e4112 = local_417;
-                                phi_4435_ = (_e4112 + (_e4109 - _e4110));
-                                phi_4436_ = (_e4107 + 1u);
+                                phi_4617_ = (_e4112 + (_e4109 - _e4110));
+                                phi_4618_ = (_e4107 + 1u);
                             } else {
-                                phi_4435_ = _e4061;
-                                phi_4436_ = _e4063;
+                                phi_4617_ = _e4061;
+                                phi_4618_ = _e4063;
                             }
-                            let _e4115 = phi_4435_;
-                            let _e4117 = phi_4436_;
-                            phi_4437_ = _e4115;
-                            phi_4438_ = _e4117;
+                            let _e4115 = phi_4617_;
+                            let _e4117 = phi_4618_;
+                            phi_4619_ = _e4115;
+                            phi_4620_ = _e4117;
                         } else {
-                            phi_4437_ = _e4061;
-                            phi_4438_ = _e4063;
+                            phi_4619_ = _e4061;
+                            phi_4620_ = _e4063;
                         }
-                        let _e4119 = phi_4437_;
-                        let _e4121 = phi_4438_;
+                        let _e4119 = phi_4619_;
+                        let _e4121 = phi_4620_;
                         let _e4122 = local_416;
-                        phi_4340_ = (_e4122 + 1u);
-                        phi_4343_ = _e4119;
-                        phi_4345_ = _e4121;
+                        phi_4522_ = (_e4122 + 1u);
+                        phi_4525_ = _e4119;
+                        phi_4527_ = _e4121;
                     } else {
-                        phi_4340_ = u32();
-                        phi_4343_ = u32();
-                        phi_4345_ = u32();
+                        phi_4522_ = u32();
+                        phi_4525_ = u32();
+                        phi_4527_ = u32();
                     }
-                    let _e4125 = phi_4340_;
-                    let _e4127 = phi_4343_;
-                    let _e4129 = phi_4345_;
+                    let _e4125 = phi_4522_;
+                    let _e4127 = phi_4525_;
+                    let _e4129 = phi_4527_;
                     continue;
                     continuing {
                         let _e4130 = local_419;
-                        phi_4339_ = _e4125;
-                        phi_4342_ = _e4127;
-                        phi_4344_ = _e4129;
-                        phi_5071_ = _e3872;
+                        phi_4521_ = _e4125;
+                        phi_4524_ = _e4127;
+                        phi_4526_ = _e4129;
+                        phi_5283_ = _e3872;
                         break if !(_e4130);
                     }
                 }
-                let _e4133 = phi_5071_;
+                let _e4133 = phi_5283_;
                 if _e4133 {
                     break;
                 }
@@ -5033,20 +5033,20 @@ fn function_() {
                     if _e696 {
                         let _e697 = local_426;
                         let _e698 = local_14;
-                        phi_4514_ = (_e697 < _e698);
+                        phi_4696_ = (_e697 < _e698);
                     } else {
-                        phi_4514_ = bool();
+                        phi_4696_ = bool();
                     }
-                    let _e701 = phi_4514_;
+                    let _e701 = phi_4696_;
                     let _e702 = local_427;
-                    phi_4516_ = _e701;
-                    phi_4517_ = select(true, false, _e702);
+                    phi_4698_ = _e701;
+                    phi_4699_ = select(true, false, _e702);
                 } else {
-                    phi_4516_ = bool();
-                    phi_4517_ = true;
+                    phi_4698_ = bool();
+                    phi_4699_ = true;
                 }
-                let _e705 = phi_4516_;
-                let _e707 = phi_4517_;
+                let _e705 = phi_4698_;
+                let _e707 = phi_4699_;
                 if select(_e705, false, _e707) {
                     let _e709 = local_426;
                     let _e710 = local_13;
@@ -5097,11 +5097,11 @@ fn function_() {
                     let _e747 = local_434;
                     let _e750 = global_4.member[_e747];
                     if ((bitcast<u32>(bitcast<f32>(_e750)) & 2147483647u) > 2139095040u) {
-                        phi_4572_ = array<f32, 3>(0f, 0f, 0f);
+                        phi_4754_ = array<f32, 3>(0f, 0f, 0f);
                     } else {
-                        phi_4572_ = array<f32, 3>(_e740, _e741, bitcast<f32>(_e738));
+                        phi_4754_ = array<f32, 3>(_e740, _e741, bitcast<f32>(_e738));
                     }
-                    let _e756 = phi_4572_;
+                    let _e756 = phi_4754_;
                     local_435 = _e756;
                     let _e757 = local_428;
                     let _e758 = (3u * _e757);

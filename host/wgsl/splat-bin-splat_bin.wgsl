@@ -374,177 +374,177 @@ fn function_() {
     var local_272: u32;
     var local_273: u32;
     var local_274: u32;
-    var phi_352_: bool;
-    var phi_363_: u32;
-    var phi_365_: u32;
+    var phi_355_: bool;
     var phi_366_: u32;
-    var phi_367_: u32;
     var phi_368_: u32;
     var phi_369_: u32;
     var phi_370_: u32;
     var phi_371_: u32;
     var phi_372_: u32;
+    var phi_373_: u32;
+    var phi_374_: u32;
     var phi_375_: u32;
-    var phi_376_: u32;
-    var phi_392_: u32;
-    var phi_395_: u32;
-    var phi_431_: u32;
-    var phi_393_: u32;
-    var phi_396_: u32;
-    var phi_2431_: bool;
-    var phi_2456_: bool;
-    var phi_468_: u32;
-    var phi_471_: u32;
-    var phi_473_: u32;
-    var phi_507_: u32;
-    var phi_509_: u32;
-    var phi_510_: bool;
-    var phi_515_: u32;
-    var phi_518_: u32;
-    var phi_542_: u32;
-    var phi_516_: u32;
-    var phi_519_: u32;
-    var phi_2452_: bool;
-    var phi_2463_: bool;
-    var phi_545_: u32;
-    var phi_548_: type_24;
-    var phi_550_: u32;
-    var phi_565_: type_24;
-    var phi_591_: type_24;
-    var phi_566_: type_24;
-    var phi_592_: bool;
-    var phi_2460_: bool;
-    var phi_612_: u32;
-    var phi_681_: u32;
+    var phi_378_: u32;
+    var phi_379_: u32;
+    var phi_533_: u32;
+    var phi_536_: u32;
+    var phi_572_: u32;
+    var phi_534_: u32;
+    var phi_537_: u32;
+    var phi_2713_: bool;
+    var phi_2756_: bool;
+    var phi_610_: u32;
+    var phi_613_: u32;
+    var phi_615_: u32;
+    var phi_649_: u32;
+    var phi_651_: u32;
+    var phi_652_: bool;
+    var phi_657_: u32;
+    var phi_660_: u32;
     var phi_684_: u32;
-    var phi_708_: u32;
-    var phi_724_: u32;
-    var phi_730_: u32;
-    var phi_682_: u32;
-    var phi_685_: u32;
-    var phi_2465_: bool;
-    var phi_734_: u32;
-    var phi_737_: u32;
-    var phi_761_: u32;
-    var phi_777_: u32;
-    var phi_783_: u32;
-    var phi_735_: u32;
-    var phi_738_: u32;
-    var phi_2474_: bool;
-    var phi_802_: u32;
-    var phi_842_: u32;
-    var phi_825_: u32;
-    var phi_843_: u32;
-    var phi_2483_: bool;
-    var phi_955_: type_24;
-    var phi_957_: type_24;
-    var phi_979_: u32;
-    var phi_1000_: u32;
-    var phi_1045_: u32;
-    var phi_1026_: u32;
-    var phi_1046_: u32;
-    var phi_958_: type_24;
-    var phi_2480_: bool;
-    var phi_1544_: u32;
-    var phi_1562_: u32;
-    var phi_1243_: array<f32, 3>;
-    var phi_1254_: f32;
-    var phi_1279_: u32;
-    var phi_1292_: u32;
-    var phi_1326_: type_21;
-    var phi_1337_: f32;
-    var phi_1361_: bool;
-    var phi_1383_: f32;
-    var phi_1384_: f32;
-    var phi_1390_: f32;
-    var phi_1392_: f32;
-    var phi_1489_: u32;
-    var phi_1490_: u32;
-    var phi_1510_: bool;
-    var phi_1526_: u32;
-    var phi_1527_: u32;
-    var phi_1564_: u32;
-    var phi_1565_: u32;
-    var phi_2511_: bool;
-    var phi_1566_: u32;
-    var phi_1567_: type_24;
-    var phi_1568_: u32;
-    var phi_2510_: bool;
-    var phi_546_: u32;
-    var phi_549_: type_24;
-    var phi_551_: u32;
-    var phi_1569_: bool;
-    var phi_2509_: bool;
-    var phi_2544_: bool;
-    var phi_1574_: u32;
-    var phi_1591_: u32;
-    var phi_1594_: u32;
-    var phi_1630_: u32;
-    var phi_1592_: u32;
-    var phi_1595_: u32;
-    var phi_2541_: bool;
-    var phi_1659_: u32;
-    var phi_1676_: u32;
-    var phi_1679_: u32;
-    var phi_1703_: u32;
-    var phi_1677_: u32;
-    var phi_1680_: u32;
-    var phi_2548_: bool;
-    var phi_2557_: bool;
+    var phi_658_: u32;
+    var phi_661_: u32;
+    var phi_2752_: bool;
+    var phi_2764_: bool;
+    var phi_687_: u32;
+    var phi_690_: type_24;
+    var phi_692_: u32;
+    var phi_707_: type_24;
+    var phi_733_: type_24;
+    var phi_708_: type_24;
+    var phi_734_: bool;
+    var phi_2761_: bool;
+    var phi_754_: u32;
+    var phi_823_: u32;
+    var phi_826_: u32;
+    var phi_850_: u32;
+    var phi_866_: u32;
+    var phi_872_: u32;
+    var phi_824_: u32;
+    var phi_827_: u32;
+    var phi_2766_: bool;
+    var phi_876_: u32;
+    var phi_879_: u32;
+    var phi_903_: u32;
+    var phi_919_: u32;
+    var phi_925_: u32;
+    var phi_877_: u32;
+    var phi_880_: u32;
+    var phi_2775_: bool;
+    var phi_944_: u32;
+    var phi_984_: u32;
+    var phi_967_: u32;
+    var phi_985_: u32;
+    var phi_2784_: bool;
+    var phi_1097_: type_24;
+    var phi_1099_: type_24;
+    var phi_1121_: u32;
+    var phi_1142_: u32;
+    var phi_1187_: u32;
+    var phi_1168_: u32;
+    var phi_1188_: u32;
+    var phi_1100_: type_24;
+    var phi_2781_: bool;
+    var phi_1686_: u32;
     var phi_1704_: u32;
-    var phi_2556_: bool;
-    var phi_1707_: type_24;
+    var phi_1385_: array<f32, 3>;
+    var phi_1396_: f32;
+    var phi_1421_: u32;
+    var phi_1434_: u32;
+    var phi_1468_: type_21;
+    var phi_1479_: f32;
+    var phi_1503_: bool;
+    var phi_1525_: f32;
+    var phi_1526_: f32;
+    var phi_1532_: f32;
+    var phi_1534_: f32;
+    var phi_1631_: u32;
+    var phi_1632_: u32;
+    var phi_1652_: bool;
+    var phi_1668_: u32;
+    var phi_1669_: u32;
+    var phi_1706_: u32;
+    var phi_1707_: u32;
+    var phi_2812_: bool;
+    var phi_1708_: u32;
+    var phi_1709_: type_24;
     var phi_1710_: u32;
-    var phi_1712_: u32;
-    var phi_1729_: type_24;
-    var phi_1755_: type_24;
-    var phi_1730_: type_24;
-    var phi_1756_: bool;
-    var phi_2553_: bool;
-    var phi_1776_: u32;
-    var phi_1845_: u32;
-    var phi_1848_: u32;
+    var phi_2811_: bool;
+    var phi_688_: u32;
+    var phi_691_: type_24;
+    var phi_693_: u32;
+    var phi_1711_: bool;
+    var phi_2810_: bool;
+    var phi_2845_: bool;
+    var phi_1716_: u32;
+    var phi_1871_: u32;
+    var phi_1874_: u32;
+    var phi_1910_: u32;
     var phi_1872_: u32;
-    var phi_1888_: u32;
-    var phi_1894_: u32;
-    var phi_1846_: u32;
-    var phi_1849_: u32;
-    var phi_2559_: bool;
-    var phi_1898_: u32;
-    var phi_1901_: u32;
-    var phi_1925_: u32;
-    var phi_1941_: u32;
-    var phi_1947_: u32;
-    var phi_1899_: u32;
-    var phi_1902_: u32;
-    var phi_2568_: bool;
-    var phi_1966_: u32;
-    var phi_2006_: u32;
-    var phi_1989_: u32;
-    var phi_2007_: u32;
-    var phi_2577_: bool;
-    var phi_2119_: type_24;
-    var phi_2121_: type_24;
-    var phi_2143_: u32;
-    var phi_2164_: u32;
-    var phi_2209_: u32;
-    var phi_2190_: u32;
-    var phi_2210_: u32;
-    var phi_2122_: type_24;
-    var phi_2574_: bool;
-    var phi_2605_: bool;
-    var phi_2370_: type_24;
-    var phi_2371_: u32;
-    var phi_2604_: bool;
-    var phi_1708_: type_24;
-    var phi_1711_: u32;
-    var phi_1713_: u32;
-    var phi_2603_: bool;
-    var phi_2607_: bool;
-    var phi_469_: u32;
-    var phi_472_: u32;
-    var phi_474_: u32;
-    var phi_2606_: bool;
+    var phi_1875_: u32;
+    var phi_2842_: bool;
+    var phi_1940_: u32;
+    var phi_1957_: u32;
+    var phi_1960_: u32;
+    var phi_1984_: u32;
+    var phi_1958_: u32;
+    var phi_1961_: u32;
+    var phi_2867_: bool;
+    var phi_2877_: bool;
+    var phi_1985_: u32;
+    var phi_2876_: bool;
+    var phi_1988_: type_24;
+    var phi_1991_: u32;
+    var phi_1993_: u32;
+    var phi_2010_: type_24;
+    var phi_2036_: type_24;
+    var phi_2011_: type_24;
+    var phi_2037_: bool;
+    var phi_2873_: bool;
+    var phi_2057_: u32;
+    var phi_2126_: u32;
+    var phi_2129_: u32;
+    var phi_2153_: u32;
+    var phi_2169_: u32;
+    var phi_2175_: u32;
+    var phi_2127_: u32;
+    var phi_2130_: u32;
+    var phi_2879_: bool;
+    var phi_2179_: u32;
+    var phi_2182_: u32;
+    var phi_2206_: u32;
+    var phi_2222_: u32;
+    var phi_2228_: u32;
+    var phi_2180_: u32;
+    var phi_2183_: u32;
+    var phi_2888_: bool;
+    var phi_2247_: u32;
+    var phi_2287_: u32;
+    var phi_2270_: u32;
+    var phi_2288_: u32;
+    var phi_2897_: bool;
+    var phi_2400_: type_24;
+    var phi_2402_: type_24;
+    var phi_2424_: u32;
+    var phi_2445_: u32;
+    var phi_2490_: u32;
+    var phi_2471_: u32;
+    var phi_2491_: u32;
+    var phi_2403_: type_24;
+    var phi_2894_: bool;
+    var phi_2925_: bool;
+    var phi_2651_: type_24;
+    var phi_2652_: u32;
+    var phi_2924_: bool;
+    var phi_1989_: type_24;
+    var phi_1992_: u32;
+    var phi_1994_: u32;
+    var phi_2923_: bool;
+    var phi_2927_: bool;
+    var phi_611_: u32;
+    var phi_614_: u32;
+    var phi_616_: u32;
+    var phi_2926_: bool;
     var local_275: type_24;
     var local_276: type_24;
     var local_277: u32;
@@ -690,7 +690,7 @@ fn function_() {
                                         let _e467 = local_33;
                                         let _e468 = local_17;
                                         if (_e467 == _e468) {
-                                            phi_352_ = true;
+                                            phi_355_ = true;
                                         } else {
                                             let _e470 = local_13;
                                             let _e472 = local_13;
@@ -717,9 +717,9 @@ fn function_() {
                                             let _e527 = select(0f, _e525, (_e525 > 0f));
                                             let _e531 = local_34;
                                             let _e532 = local_34;
-                                            phi_352_ = (((_e519 * _e519) + (_e527 * _e527)) <= (_e531 * _e532));
+                                            phi_355_ = (((_e519 * _e519) + (_e527 * _e527)) <= (_e531 * _e532));
                                         }
-                                        let _e536 = phi_352_;
+                                        let _e536 = phi_355_;
                                         local_35 = _e536;
                                         if _e536 {
                                             let _e537 = local_33;
@@ -730,53 +730,53 @@ fn function_() {
                                             }
                                             let _e540 = local_33;
                                             let _e543 = global_5.member[_e540];
-                                            phi_363_ = _e543;
+                                            phi_366_ = _e543;
                                         } else {
-                                            phi_363_ = 0u;
+                                            phi_366_ = 0u;
                                         }
-                                        let _e545 = phi_363_;
+                                        let _e545 = phi_366_;
                                         let _e546 = local_35;
                                         let _e547 = local_33;
-                                        phi_365_ = _e545;
-                                        phi_366_ = select(0u, _e547, _e546);
+                                        phi_368_ = _e545;
+                                        phi_369_ = select(0u, _e547, _e546);
                                     } else {
-                                        phi_365_ = 0u;
-                                        phi_366_ = 0u;
+                                        phi_368_ = 0u;
+                                        phi_369_ = 0u;
                                     }
-                                    let _e550 = phi_365_;
-                                    let _e552 = phi_366_;
-                                    phi_367_ = _e550;
-                                    phi_368_ = _e552;
+                                    let _e550 = phi_368_;
+                                    let _e552 = phi_369_;
+                                    phi_370_ = _e550;
+                                    phi_371_ = _e552;
                                 } else {
-                                    phi_367_ = 0u;
-                                    phi_368_ = 0u;
+                                    phi_370_ = 0u;
+                                    phi_371_ = 0u;
                                 }
-                                let _e554 = phi_367_;
-                                let _e556 = phi_368_;
-                                phi_369_ = _e554;
-                                phi_370_ = _e556;
+                                let _e554 = phi_370_;
+                                let _e556 = phi_371_;
+                                phi_372_ = _e554;
+                                phi_373_ = _e556;
                             } else {
-                                phi_369_ = 0u;
-                                phi_370_ = 0u;
+                                phi_372_ = 0u;
+                                phi_373_ = 0u;
                             }
-                            let _e558 = phi_369_;
-                            let _e560 = phi_370_;
-                            phi_371_ = _e558;
-                            phi_372_ = _e560;
+                            let _e558 = phi_372_;
+                            let _e560 = phi_373_;
+                            phi_374_ = _e558;
+                            phi_375_ = _e560;
                         } else {
-                            phi_371_ = 0u;
-                            phi_372_ = 0u;
+                            phi_374_ = 0u;
+                            phi_375_ = 0u;
                         }
-                        let _e562 = phi_371_;
-                        let _e564 = phi_372_;
-                        phi_375_ = _e562;
-                        phi_376_ = _e564;
+                        let _e562 = phi_374_;
+                        let _e564 = phi_375_;
+                        phi_378_ = _e562;
+                        phi_379_ = _e564;
                     } else {
-                        phi_375_ = 0u;
-                        phi_376_ = 0u;
+                        phi_378_ = 0u;
+                        phi_379_ = 0u;
                     }
-                    let _e566 = phi_375_;
-                    let _e568 = phi_376_;
+                    let _e566 = phi_378_;
+                    let _e568 = phi_379_;
                     local_36 = _e566;
                     local_37 = _e568;
                     let _e569 = local;
@@ -801,11 +801,11 @@ fn function_() {
                     global_8[_e578] = _e580;
                     storageBarrier();
                     workgroupBarrier();
-                    phi_392_ = 1u;
-                    phi_395_ = 768u;
+                    phi_533_ = 1u;
+                    phi_536_ = 768u;
                     loop {
-                        let _e582 = phi_392_;
-                        let _e584 = phi_395_;
+                        let _e582 = phi_533_;
+                        let _e584 = phi_536_;
                         local_40 = _e582;
                         local_41 = _e584;
                         let _e585 = local_40;
@@ -821,7 +821,7 @@ fn function_() {
                             local_43 = _e592;
                             if (_e592 < 1792u) {
                             } else {
-                                phi_2431_ = true;
+                                phi_2713_ = true;
                                 break;
                             }
                             let _e594 = local_43;
@@ -837,17 +837,17 @@ fn function_() {
                                 local_45 = _e604;
                                 if (_e604 < 1792u) {
                                 } else {
-                                    phi_2431_ = true;
+                                    phi_2713_ = true;
                                     break;
                                 }
                                 let _e606 = local_45;
                                 let _e608 = global_8[_e606];
                                 let _e609 = local_44;
-                                phi_431_ = (_e608 + _e609);
+                                phi_572_ = (_e608 + _e609);
                             } else {
-                                phi_431_ = _e596;
+                                phi_572_ = _e596;
                             }
-                            let _e612 = phi_431_;
+                            let _e612 = phi_572_;
                             local_46 = _e612;
                             let _e613 = local_265;
                             let _e614 = local;
@@ -855,7 +855,7 @@ fn function_() {
                             local_47 = _e615;
                             if (_e615 < 1792u) {
                             } else {
-                                phi_2431_ = true;
+                                phi_2713_ = true;
                                 break;
                             }
                             let _e617 = local_47;
@@ -864,24 +864,24 @@ fn function_() {
                             storageBarrier();
                             workgroupBarrier();
                             let _e620 = local_40;
-                            phi_393_ = (_e620 * 2u);
-                            phi_396_ = _e589;
+                            phi_534_ = (_e620 * 2u);
+                            phi_537_ = _e589;
                         } else {
-                            phi_393_ = u32();
-                            phi_396_ = u32();
+                            phi_534_ = u32();
+                            phi_537_ = u32();
                         }
-                        let _e623 = phi_393_;
-                        let _e625 = phi_396_;
+                        let _e623 = phi_534_;
+                        let _e625 = phi_537_;
                         continue;
                         continuing {
                             let _e626 = local_42;
-                            phi_392_ = _e623;
-                            phi_395_ = _e625;
-                            phi_2431_ = false;
+                            phi_533_ = _e623;
+                            phi_536_ = _e625;
+                            phi_2713_ = false;
                             break if !(_e626);
                         }
                     }
-                    let _e629 = phi_2431_;
+                    let _e629 = phi_2713_;
                     if _e629 {
                         break;
                     }
@@ -900,15 +900,15 @@ fn function_() {
                     let _e640 = select(16u, 1u, ((_e636.member_10 & 2u) == 0u));
                     local_266 = _e640;
                     local_51 = (32u >> bitcast<u32>((select(firstTrailingBit(_e640), 32u, (_e640 == 0u)) & 31u)));
-                    phi_2456_ = _e629;
-                    phi_468_ = 0u;
-                    phi_471_ = 0u;
-                    phi_473_ = 0u;
+                    phi_2756_ = _e629;
+                    phi_610_ = 0u;
+                    phi_613_ = 0u;
+                    phi_615_ = 0u;
                     loop {
-                        let _e648 = phi_2456_;
-                        let _e650 = phi_468_;
-                        let _e652 = phi_471_;
-                        let _e654 = phi_473_;
+                        let _e648 = phi_2756_;
+                        let _e650 = phi_610_;
+                        let _e652 = phi_613_;
+                        let _e654 = phi_615_;
                         local_52 = _e650;
                         local_53 = _e652;
                         local_54 = _e654;
@@ -935,7 +935,7 @@ fn function_() {
                                     let _e672 = local_7;
                                     if (_e671 < _e672) {
                                     } else {
-                                        phi_2606_ = true;
+                                        phi_2926_ = true;
                                         break;
                                     }
                                     let _e674 = local_58;
@@ -943,26 +943,26 @@ fn function_() {
                                     let _e678 = local_52;
                                     let _e679 = local_266;
                                     let _e684 = local_266;
-                                    phi_507_ = ((_e677 >> bitcast<u32>(((_e678 * _e679) & 31u))) & (4294967295u >> bitcast<u32>(((32u - _e684) & 31u))));
+                                    phi_649_ = ((_e677 >> bitcast<u32>(((_e678 * _e679) & 31u))) & (4294967295u >> bitcast<u32>(((32u - _e684) & 31u))));
                                 } else {
-                                    phi_507_ = u32();
+                                    phi_649_ = u32();
                                 }
-                                let _e691 = phi_507_;
+                                let _e691 = phi_649_;
                                 let _e692 = local_57;
-                                phi_509_ = _e691;
-                                phi_510_ = select(true, false, _e692);
+                                phi_651_ = _e691;
+                                phi_652_ = select(true, false, _e692);
                             } else {
-                                phi_509_ = u32();
-                                phi_510_ = true;
+                                phi_651_ = u32();
+                                phi_652_ = true;
                             }
-                            let _e695 = phi_509_;
-                            let _e697 = phi_510_;
+                            let _e695 = phi_651_;
+                            let _e697 = phi_652_;
                             if _e697 {
-                                phi_515_ = 255u;
-                                phi_518_ = 0u;
+                                phi_657_ = 255u;
+                                phi_660_ = 0u;
                                 loop {
-                                    let _e699 = phi_515_;
-                                    let _e701 = phi_518_;
+                                    let _e699 = phi_657_;
+                                    let _e701 = phi_660_;
                                     local_59 = _e699;
                                     local_60 = _e701;
                                     let _e702 = local_60;
@@ -979,7 +979,7 @@ fn function_() {
                                         local_63 = _e710;
                                         if (_e710 < 1792u) {
                                         } else {
-                                            phi_2452_ = true;
+                                            phi_2752_ = true;
                                             break;
                                         }
                                         let _e712 = local_63;
@@ -988,49 +988,49 @@ fn function_() {
                                         let _e716 = (_e714 > _e715);
                                         local_64 = _e716;
                                         if _e716 {
-                                            phi_542_ = _e701;
+                                            phi_684_ = _e701;
                                         } else {
                                             let _e717 = local_62;
-                                            phi_542_ = (_e717 + 1u);
+                                            phi_684_ = (_e717 + 1u);
                                         }
-                                        let _e720 = phi_542_;
+                                        let _e720 = phi_684_;
                                         let _e721 = local_64;
                                         let _e722 = local_62;
                                         let _e723 = local_59;
-                                        phi_516_ = select(_e723, _e722, _e721);
-                                        phi_519_ = _e720;
+                                        phi_658_ = select(_e723, _e722, _e721);
+                                        phi_661_ = _e720;
                                     } else {
-                                        phi_516_ = u32();
-                                        phi_519_ = u32();
+                                        phi_658_ = u32();
+                                        phi_661_ = u32();
                                     }
-                                    let _e726 = phi_516_;
-                                    let _e728 = phi_519_;
+                                    let _e726 = phi_658_;
+                                    let _e728 = phi_661_;
                                     continue;
                                     continuing {
                                         let _e729 = local_61;
-                                        phi_515_ = _e726;
-                                        phi_518_ = _e728;
-                                        phi_2452_ = _e648;
+                                        phi_657_ = _e726;
+                                        phi_660_ = _e728;
+                                        phi_2752_ = _e648;
                                         break if !(_e729);
                                     }
                                 }
-                                let _e732 = phi_2452_;
-                                phi_2606_ = _e732;
+                                let _e732 = phi_2752_;
+                                phi_2926_ = _e732;
                                 if _e732 {
                                     break;
                                 }
                                 let _e733 = local_60;
                                 let _e734 = local_11;
                                 let _e735 = local_12;
-                                phi_2463_ = _e732;
-                                phi_545_ = 0u;
-                                phi_548_ = type_24(_e733, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e734, _e735, false);
-                                phi_550_ = 0u;
+                                phi_2764_ = _e732;
+                                phi_687_ = 0u;
+                                phi_690_ = type_24(_e733, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e734, _e735, false);
+                                phi_692_ = 0u;
                                 loop {
-                                    let _e738 = phi_2463_;
-                                    let _e740 = phi_545_;
-                                    let _e742 = phi_548_;
-                                    let _e744 = phi_550_;
+                                    let _e738 = phi_2764_;
+                                    let _e740 = phi_687_;
+                                    let _e742 = phi_690_;
+                                    let _e744 = phi_692_;
                                     local_65 = _e740;
                                     local_66 = _e744;
                                     local_277 = _e740;
@@ -1044,9 +1044,9 @@ fn function_() {
                                         let _e751 = local_49;
                                         let _e752 = (_e750 < _e751);
                                         if _e752 {
-                                            phi_565_ = _e742;
+                                            phi_707_ = _e742;
                                             loop {
-                                                let _e754 = phi_565_;
+                                                let _e754 = phi_707_;
                                                 local_68 = _e754;
                                                 local_275 = _e754;
                                                 let _e755 = local_68;
@@ -1058,7 +1058,7 @@ fn function_() {
                                                     local_70 = _e760;
                                                     if (_e760 < 1792u) {
                                                     } else {
-                                                        phi_2460_ = true;
+                                                        phi_2761_ = true;
                                                         break;
                                                     }
                                                     let _e762 = local_70;
@@ -1068,36 +1068,36 @@ fn function_() {
                                                     if _e766 {
                                                         let _e767 = local_69;
                                                         let _e769 = local_68;
-                                                        phi_591_ = type_24((_e767 + 1u), _e769.member_1, _e769.member_2, _e769.member_3, _e769.member_4, _e769.member_5, _e769.member_6, _e769.member_7, _e769.member_8, _e769.member_9, _e769.member_10, _e769.member_11, _e769.member_12, _e769.member_13, _e769.member_14);
+                                                        phi_733_ = type_24((_e767 + 1u), _e769.member_1, _e769.member_2, _e769.member_3, _e769.member_4, _e769.member_5, _e769.member_6, _e769.member_7, _e769.member_8, _e769.member_9, _e769.member_10, _e769.member_11, _e769.member_12, _e769.member_13, _e769.member_14);
                                                     } else {
-                                                        phi_591_ = type_24();
+                                                        phi_733_ = type_24();
                                                     }
-                                                    let _e787 = phi_591_;
-                                                    phi_566_ = _e787;
-                                                    phi_592_ = _e766;
+                                                    let _e787 = phi_733_;
+                                                    phi_708_ = _e787;
+                                                    phi_734_ = _e766;
                                                 } else {
-                                                    phi_566_ = type_24();
-                                                    phi_592_ = false;
+                                                    phi_708_ = type_24();
+                                                    phi_734_ = false;
                                                 }
-                                                let _e789 = phi_566_;
-                                                let _e791 = phi_592_;
+                                                let _e789 = phi_708_;
+                                                let _e791 = phi_734_;
                                                 local_71 = _e791;
                                                 continue;
                                                 continuing {
                                                     let _e792 = local_71;
-                                                    phi_565_ = _e789;
-                                                    phi_2460_ = _e738;
+                                                    phi_707_ = _e789;
+                                                    phi_2761_ = _e738;
                                                     break if !(_e792);
                                                 }
                                             }
-                                            let _e795 = phi_2460_;
-                                            phi_2509_ = _e795;
+                                            let _e795 = phi_2761_;
+                                            phi_2810_ = _e795;
                                             if _e795 {
                                                 break;
                                             }
                                             let _e796 = local_69;
                                             if (_e796 == 0u) {
-                                                phi_612_ = 0u;
+                                                phi_754_ = 0u;
                                             } else {
                                                 let _e798 = local_41;
                                                 let _e799 = local_69;
@@ -1105,14 +1105,14 @@ fn function_() {
                                                 local_72 = _e801;
                                                 if (_e801 < 1792u) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e803 = local_72;
                                                 let _e805 = global_8[_e803];
-                                                phi_612_ = _e805;
+                                                phi_754_ = _e805;
                                             }
-                                            let _e807 = phi_612_;
+                                            let _e807 = phi_754_;
                                             let _e808 = local_67;
                                             local_73 = (_e808 - _e807);
                                             let _e810 = local_68;
@@ -1123,7 +1123,7 @@ fn function_() {
                                                 let _e816 = local_13;
                                                 local_75 = _e816.member_3;
                                                 if (_e816.member_3 == 0u) {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e819 = local_74;
@@ -1134,7 +1134,7 @@ fn function_() {
                                                 local_77 = _e823;
                                                 if (_e823 < 1792u) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e825 = local_77;
@@ -1144,7 +1144,7 @@ fn function_() {
                                                 let _e829 = (_e828 == 0u);
                                                 local_79 = _e829;
                                                 if _e829 {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e830 = local_78;
@@ -1153,7 +1153,7 @@ fn function_() {
                                                 local_80 = ((_e830 % _e831) * _e833);
                                                 let _e835 = local_79;
                                                 if _e835 {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e836 = local_78;
@@ -1190,11 +1190,11 @@ fn function_() {
                                                 let _e958 = select(_e957, _e954, (_e954 < _e955));
                                                 local_268 = _e958;
                                                 local_85 = type_24(_e951.member, _e951.member_1, _e951.member_2, _e951.member_3, _e951.member_4, _e951.member_5, _e951.member_6, _e958, _e951.member_8, _e951.member_9, _e951.member_10, _e951.member_11, _e951.member_12, _e951.member_13, _e951.member_14);
-                                                phi_681_ = (_e958 - 1u);
-                                                phi_684_ = 0u;
+                                                phi_823_ = (_e958 - 1u);
+                                                phi_826_ = 0u;
                                                 loop {
-                                                    let _e977 = phi_681_;
-                                                    let _e979 = phi_684_;
+                                                    let _e977 = phi_823_;
+                                                    let _e979 = phi_826_;
                                                     local_86 = _e977;
                                                     local_87 = _e979;
                                                     let _e980 = local_87;
@@ -1209,11 +1209,11 @@ fn function_() {
                                                         local_89 = _e986;
                                                         if ((_e985 % 2u) > 0u) {
                                                             let _e989 = local_89;
-                                                            phi_708_ = (_e989 + 1u);
+                                                            phi_850_ = (_e989 + 1u);
                                                         } else {
-                                                            phi_708_ = _e986;
+                                                            phi_850_ = _e986;
                                                         }
-                                                        let _e992 = phi_708_;
+                                                        let _e992 = phi_850_;
                                                         local_90 = _e992;
                                                         let _e993 = local_268;
                                                         if (_e992 < _e993) {
@@ -1225,57 +1225,57 @@ fn function_() {
                                                             let _e1000 = local_3;
                                                             if (_e999 < _e1000) {
                                                             } else {
-                                                                phi_2465_ = true;
+                                                                phi_2766_ = true;
                                                                 break;
                                                             }
                                                             let _e1002 = local_91;
                                                             let _e1005 = global_6.member[_e1002];
-                                                            phi_724_ = _e1005;
+                                                            phi_866_ = _e1005;
                                                         } else {
-                                                            phi_724_ = 4294967295u;
+                                                            phi_866_ = 4294967295u;
                                                         }
-                                                        let _e1007 = phi_724_;
+                                                        let _e1007 = phi_866_;
                                                         let _e1008 = local_73;
                                                         let _e1009 = (_e1007 <= _e1008);
                                                         local_92 = _e1009;
                                                         if _e1009 {
-                                                            phi_730_ = _e977;
+                                                            phi_872_ = _e977;
                                                         } else {
                                                             let _e1010 = local_90;
-                                                            phi_730_ = (_e1010 - 1u);
+                                                            phi_872_ = (_e1010 - 1u);
                                                         }
-                                                        let _e1013 = phi_730_;
+                                                        let _e1013 = phi_872_;
                                                         let _e1014 = local_92;
                                                         let _e1015 = local_90;
                                                         let _e1016 = local_87;
-                                                        phi_682_ = _e1013;
-                                                        phi_685_ = select(_e1016, _e1015, _e1014);
+                                                        phi_824_ = _e1013;
+                                                        phi_827_ = select(_e1016, _e1015, _e1014);
                                                     } else {
-                                                        phi_682_ = u32();
-                                                        phi_685_ = u32();
+                                                        phi_824_ = u32();
+                                                        phi_827_ = u32();
                                                     }
-                                                    let _e1019 = phi_682_;
-                                                    let _e1021 = phi_685_;
+                                                    let _e1019 = phi_824_;
+                                                    let _e1021 = phi_827_;
                                                     continue;
                                                     continuing {
                                                         let _e1022 = local_88;
-                                                        phi_681_ = _e1019;
-                                                        phi_684_ = _e1021;
-                                                        phi_2465_ = _e795;
+                                                        phi_823_ = _e1019;
+                                                        phi_826_ = _e1021;
+                                                        phi_2766_ = _e795;
                                                         break if !(_e1022);
                                                     }
                                                 }
-                                                let _e1025 = phi_2465_;
-                                                phi_2509_ = _e1025;
+                                                let _e1025 = phi_2766_;
+                                                phi_2810_ = _e1025;
                                                 if _e1025 {
                                                     break;
                                                 }
                                                 let _e1026 = local_267;
-                                                phi_734_ = (_e1026 - 1u);
-                                                phi_737_ = 0u;
+                                                phi_876_ = (_e1026 - 1u);
+                                                phi_879_ = 0u;
                                                 loop {
-                                                    let _e1029 = phi_734_;
-                                                    let _e1031 = phi_737_;
+                                                    let _e1029 = phi_876_;
+                                                    let _e1031 = phi_879_;
                                                     local_93 = _e1029;
                                                     local_94 = _e1031;
                                                     let _e1032 = local_94;
@@ -1290,11 +1290,11 @@ fn function_() {
                                                         local_96 = _e1038;
                                                         if ((_e1037 % 2u) > 0u) {
                                                             let _e1041 = local_96;
-                                                            phi_761_ = (_e1041 + 1u);
+                                                            phi_903_ = (_e1041 + 1u);
                                                         } else {
-                                                            phi_761_ = _e1038;
+                                                            phi_903_ = _e1038;
                                                         }
-                                                        let _e1044 = phi_761_;
+                                                        let _e1044 = phi_903_;
                                                         local_97 = _e1044;
                                                         let _e1045 = local_87;
                                                         let _e1046 = local_268;
@@ -1308,48 +1308,48 @@ fn function_() {
                                                             let _e1055 = local_3;
                                                             if (_e1054 < _e1055) {
                                                             } else {
-                                                                phi_2474_ = true;
+                                                                phi_2775_ = true;
                                                                 break;
                                                             }
                                                             let _e1057 = local_98;
                                                             let _e1060 = global_6.member[_e1057];
-                                                            phi_777_ = _e1060;
+                                                            phi_919_ = _e1060;
                                                         } else {
-                                                            phi_777_ = 4294967295u;
+                                                            phi_919_ = 4294967295u;
                                                         }
-                                                        let _e1062 = phi_777_;
+                                                        let _e1062 = phi_919_;
                                                         let _e1063 = local_73;
                                                         let _e1064 = (_e1062 <= _e1063);
                                                         local_99 = _e1064;
                                                         if _e1064 {
-                                                            phi_783_ = _e1029;
+                                                            phi_925_ = _e1029;
                                                         } else {
                                                             let _e1065 = local_97;
-                                                            phi_783_ = (_e1065 - 1u);
+                                                            phi_925_ = (_e1065 - 1u);
                                                         }
-                                                        let _e1068 = phi_783_;
+                                                        let _e1068 = phi_925_;
                                                         let _e1069 = local_99;
                                                         let _e1070 = local_97;
                                                         let _e1071 = local_94;
-                                                        phi_735_ = _e1068;
-                                                        phi_738_ = select(_e1071, _e1070, _e1069);
+                                                        phi_877_ = _e1068;
+                                                        phi_880_ = select(_e1071, _e1070, _e1069);
                                                     } else {
-                                                        phi_735_ = u32();
-                                                        phi_738_ = u32();
+                                                        phi_877_ = u32();
+                                                        phi_880_ = u32();
                                                     }
-                                                    let _e1074 = phi_735_;
-                                                    let _e1076 = phi_738_;
+                                                    let _e1074 = phi_877_;
+                                                    let _e1076 = phi_880_;
                                                     continue;
                                                     continuing {
                                                         let _e1077 = local_95;
-                                                        phi_734_ = _e1074;
-                                                        phi_737_ = _e1076;
-                                                        phi_2474_ = _e1025;
+                                                        phi_876_ = _e1074;
+                                                        phi_879_ = _e1076;
+                                                        phi_2775_ = _e1025;
                                                         break if !(_e1077);
                                                     }
                                                 }
-                                                let _e1080 = phi_2474_;
-                                                phi_2509_ = _e1080;
+                                                let _e1080 = phi_2775_;
+                                                phi_2810_ = _e1080;
                                                 if _e1080 {
                                                     break;
                                                 }
@@ -1372,16 +1372,16 @@ fn function_() {
                                                     let _e1126 = local_3;
                                                     if (_e1125 < _e1126) {
                                                     } else {
-                                                        phi_2509_ = true;
+                                                        phi_2810_ = true;
                                                         break;
                                                     }
                                                     let _e1128 = local_102;
                                                     let _e1131 = global_6.member[_e1128];
-                                                    phi_802_ = _e1131;
+                                                    phi_944_ = _e1131;
                                                 } else {
-                                                    phi_802_ = 4294967295u;
+                                                    phi_944_ = 4294967295u;
                                                 }
-                                                let _e1133 = phi_802_;
+                                                let _e1133 = phi_944_;
                                                 let _e1134 = local_100;
                                                 local_103 = type_24(_e1134.member, _e1134.member_1, _e1134.member_2, _e1134.member_3, _e1134.member_4, _e1134.member_5, _e1134.member_6, _e1134.member_7, _e1134.member_8, _e1134.member_9, _e1133, _e1134.member_11, _e1134.member_12, _e1134.member_13, _e1134.member_14);
                                                 let _e1151 = local_94;
@@ -1400,17 +1400,17 @@ fn function_() {
                                                         let _e1180 = local_3;
                                                         if (_e1179 < _e1180) {
                                                         } else {
-                                                            phi_2509_ = true;
+                                                            phi_2810_ = true;
                                                             break;
                                                         }
                                                         let _e1182 = local_105;
                                                         let _e1185 = global_6.member[_e1182];
-                                                        phi_825_ = _e1185;
+                                                        phi_967_ = _e1185;
                                                     } else {
-                                                        phi_825_ = 4294967295u;
+                                                        phi_967_ = 4294967295u;
                                                     }
-                                                    let _e1187 = phi_825_;
-                                                    phi_843_ = _e1187;
+                                                    let _e1187 = phi_967_;
+                                                    phi_985_ = _e1187;
                                                 } else {
                                                     let _e1155 = local_87;
                                                     let _e1156 = (_e1155 + 1u);
@@ -1425,19 +1425,19 @@ fn function_() {
                                                         let _e1164 = local_3;
                                                         if (_e1163 < _e1164) {
                                                         } else {
-                                                            phi_2509_ = true;
+                                                            phi_2810_ = true;
                                                             break;
                                                         }
                                                         let _e1166 = local_107;
                                                         let _e1169 = global_6.member[_e1166];
-                                                        phi_842_ = _e1169;
+                                                        phi_984_ = _e1169;
                                                     } else {
-                                                        phi_842_ = 4294967295u;
+                                                        phi_984_ = 4294967295u;
                                                     }
-                                                    let _e1171 = phi_842_;
-                                                    phi_843_ = _e1171;
+                                                    let _e1171 = phi_984_;
+                                                    phi_985_ = _e1171;
                                                 }
-                                                let _e1189 = phi_843_;
+                                                let _e1189 = phi_985_;
                                                 let _e1190 = local_103;
                                                 local_108 = type_24(_e1190.member, _e1190.member_1, _e1190.member_2, _e1190.member_3, _e1190.member_4, _e1190.member_5, _e1190.member_6, _e1190.member_7, _e1190.member_8, _e1190.member_9, _e1190.member_10, _e1189, _e1190.member_12, _e1190.member_13, _e1190.member_14);
                                                 let _e1207 = local_82;
@@ -1451,7 +1451,7 @@ fn function_() {
                                                 let _e1218 = local_3;
                                                 if (_e1217 < _e1218) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e1220 = local_109;
@@ -1488,18 +1488,18 @@ fn function_() {
                                                 let _e1288 = select(_e1286, _e1285, (_e1285 > _e1286));
                                                 let _e1290 = select(0f, _e1288, (_e1288 > 0f));
                                                 let _e1296 = local_108;
-                                                phi_2483_ = _e1080;
-                                                phi_955_ = type_24(_e1296.member, _e1296.member_1, _e1296.member_2, _e1296.member_3, _e1296.member_4, _e1296.member_5, _e1296.member_6, _e1296.member_7, _e1296.member_8, _e1296.member_9, _e1296.member_10, _e1296.member_11, _e1296.member_12, _e1296.member_13, (((_e1282 * _e1282) + (_e1290 * _e1290)) <= (_e1224 * _e1224)));
+                                                phi_2784_ = _e1080;
+                                                phi_1097_ = type_24(_e1296.member, _e1296.member_1, _e1296.member_2, _e1296.member_3, _e1296.member_4, _e1296.member_5, _e1296.member_6, _e1296.member_7, _e1296.member_8, _e1296.member_9, _e1296.member_10, _e1296.member_11, _e1296.member_12, _e1296.member_13, (((_e1282 * _e1282) + (_e1290 * _e1290)) <= (_e1224 * _e1224)));
                                             } else {
-                                                phi_2483_ = _e795;
+                                                phi_2784_ = _e795;
                                                 let _e2985 = local_275;
-                                                phi_955_ = _e2985;
+                                                phi_1097_ = _e2985;
                                             }
-                                            let _e1314 = phi_2483_;
-                                            let _e1316 = phi_955_;
-                                            phi_957_ = _e1316;
+                                            let _e1314 = phi_2784_;
+                                            let _e1316 = phi_1097_;
+                                            phi_1099_ = _e1316;
                                             loop {
-                                                let _e1318 = phi_957_;
+                                                let _e1318 = phi_1099_;
                                                 local_110 = _e1318;
                                                 local_276 = _e1318;
                                                 let _e1319 = local_110;
@@ -1517,12 +1517,12 @@ fn function_() {
                                                     local_115 = _e1328;
                                                     if _e1328 {
                                                         let _e1332 = local_110;
-                                                        phi_979_ = _e1332.member_9;
+                                                        phi_1121_ = _e1332.member_9;
                                                     } else {
                                                         let _e1329 = local_110;
-                                                        phi_979_ = (_e1329.member_9 + 1u);
+                                                        phi_1121_ = (_e1329.member_9 + 1u);
                                                     }
-                                                    let _e1335 = phi_979_;
+                                                    let _e1335 = phi_1121_;
                                                     local_116 = _e1335;
                                                     let _e1336 = local_115;
                                                     let _e1337 = local_113;
@@ -1545,16 +1545,16 @@ fn function_() {
                                                         let _e1384 = local_3;
                                                         if (_e1383 < _e1384) {
                                                         } else {
-                                                            phi_2480_ = true;
+                                                            phi_2781_ = true;
                                                             break;
                                                         }
                                                         let _e1386 = local_120;
                                                         let _e1389 = global_6.member[_e1386];
-                                                        phi_1000_ = _e1389;
+                                                        phi_1142_ = _e1389;
                                                     } else {
-                                                        phi_1000_ = 4294967295u;
+                                                        phi_1142_ = 4294967295u;
                                                     }
-                                                    let _e1391 = phi_1000_;
+                                                    let _e1391 = phi_1142_;
                                                     let _e1392 = local_117;
                                                     local_121 = type_24(_e1392.member, _e1392.member_1, _e1392.member_2, _e1392.member_3, _e1392.member_4, _e1392.member_5, _e1392.member_6, _e1392.member_7, _e1392.member_8, _e1392.member_9, _e1391, _e1392.member_11, _e1392.member_12, _e1392.member_13, _e1392.member_14);
                                                     let _e1409 = local_269;
@@ -1573,17 +1573,17 @@ fn function_() {
                                                             let _e1442 = local_3;
                                                             if (_e1441 < _e1442) {
                                                             } else {
-                                                                phi_2480_ = true;
+                                                                phi_2781_ = true;
                                                                 break;
                                                             }
                                                             let _e1444 = local_123;
                                                             let _e1447 = global_6.member[_e1444];
-                                                            phi_1026_ = _e1447;
+                                                            phi_1168_ = _e1447;
                                                         } else {
-                                                            phi_1026_ = 4294967295u;
+                                                            phi_1168_ = 4294967295u;
                                                         }
-                                                        let _e1449 = phi_1026_;
-                                                        phi_1046_ = _e1449;
+                                                        let _e1449 = phi_1168_;
+                                                        phi_1188_ = _e1449;
                                                     } else {
                                                         let _e1413 = local_116;
                                                         let _e1414 = (_e1413 + 1u);
@@ -1598,19 +1598,19 @@ fn function_() {
                                                             let _e1424 = local_3;
                                                             if (_e1423 < _e1424) {
                                                             } else {
-                                                                phi_2480_ = true;
+                                                                phi_2781_ = true;
                                                                 break;
                                                             }
                                                             let _e1426 = local_125;
                                                             let _e1429 = global_6.member[_e1426];
-                                                            phi_1045_ = _e1429;
+                                                            phi_1187_ = _e1429;
                                                         } else {
-                                                            phi_1045_ = 4294967295u;
+                                                            phi_1187_ = 4294967295u;
                                                         }
-                                                        let _e1431 = phi_1045_;
-                                                        phi_1046_ = _e1431;
+                                                        let _e1431 = phi_1187_;
+                                                        phi_1188_ = _e1431;
                                                     }
-                                                    let _e1451 = phi_1046_;
+                                                    let _e1451 = phi_1188_;
                                                     let _e1452 = local_121;
                                                     local_126 = type_24(_e1452.member, _e1452.member_1, _e1452.member_2, _e1452.member_3, _e1452.member_4, _e1452.member_5, _e1452.member_6, _e1452.member_7, _e1452.member_8, _e1452.member_9, _e1452.member_10, _e1451, _e1452.member_12, _e1452.member_13, _e1452.member_14);
                                                     let _e1469 = local_13;
@@ -1623,7 +1623,7 @@ fn function_() {
                                                     let _e1482 = local_3;
                                                     if (_e1481 < _e1482) {
                                                     } else {
-                                                        phi_2480_ = true;
+                                                        phi_2781_ = true;
                                                         break;
                                                     }
                                                     let _e1484 = local_127;
@@ -1654,21 +1654,21 @@ fn function_() {
                                                     let _e1550 = select(_e1548, _e1547, (_e1547 > _e1548));
                                                     let _e1552 = select(0f, _e1550, (_e1550 > 0f));
                                                     let _e1558 = local_126;
-                                                    phi_958_ = type_24(_e1558.member, _e1558.member_1, _e1558.member_2, _e1558.member_3, _e1558.member_4, _e1558.member_5, _e1558.member_6, _e1558.member_7, _e1558.member_8, _e1558.member_9, _e1558.member_10, _e1558.member_11, _e1558.member_12, _e1558.member_13, (((_e1544 * _e1544) + (_e1552 * _e1552)) <= (_e1488 * _e1488)));
+                                                    phi_1100_ = type_24(_e1558.member, _e1558.member_1, _e1558.member_2, _e1558.member_3, _e1558.member_4, _e1558.member_5, _e1558.member_6, _e1558.member_7, _e1558.member_8, _e1558.member_9, _e1558.member_10, _e1558.member_11, _e1558.member_12, _e1558.member_13, (((_e1544 * _e1544) + (_e1552 * _e1552)) <= (_e1488 * _e1488)));
                                                 } else {
-                                                    phi_958_ = type_24();
+                                                    phi_1100_ = type_24();
                                                 }
-                                                let _e1576 = phi_958_;
+                                                let _e1576 = phi_1100_;
                                                 continue;
                                                 continuing {
                                                     let _e1577 = local_112;
-                                                    phi_957_ = _e1576;
-                                                    phi_2480_ = _e1314;
+                                                    phi_1099_ = _e1576;
+                                                    phi_2781_ = _e1314;
                                                     break if !(_e1577);
                                                 }
                                             }
-                                            let _e1580 = phi_2480_;
-                                            phi_2509_ = _e1580;
+                                            let _e1580 = phi_2781_;
+                                            phi_2810_ = _e1580;
                                             if _e1580 {
                                                 break;
                                             }
@@ -1683,7 +1683,7 @@ fn function_() {
                                             let _e1589 = local_13;
                                             local_132 = _e1589.member_3;
                                             if (_e1589.member_3 == 0u) {
-                                                phi_2509_ = true;
+                                                phi_2810_ = true;
                                                 break;
                                             }
                                             let _e1592 = local_131;
@@ -1707,7 +1707,7 @@ fn function_() {
                                                 let _e1649 = local_1;
                                                 if (_e1648 < _e1649) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e1651 = local_135;
@@ -1719,7 +1719,7 @@ fn function_() {
                                                 let _e1657 = local_1;
                                                 if (_e1656 < _e1657) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e1659 = local_137;
@@ -1731,7 +1731,7 @@ fn function_() {
                                                 let _e1665 = local_1;
                                                 if (_e1664 < _e1665) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e1667 = local_139;
@@ -1743,7 +1743,7 @@ fn function_() {
                                                 let _e1673 = local_1;
                                                 if (_e1672 < _e1673) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e1675 = local_141;
@@ -1759,27 +1759,27 @@ fn function_() {
                                                 let _e1689 = (_e1687 >> bitcast<u32>(24i));
                                                 local_146 = _e1689;
                                                 if (_e1689 == 0u) {
-                                                    phi_1243_ = array<f32, 3>(0f, 0f, 0f);
+                                                    phi_1385_ = array<f32, 3>(0f, 0f, 0f);
                                                 } else {
                                                     let _e1691 = local_146;
                                                     let _e1697 = bitcast<f32>((bitcast<u32>((bitcast<i32>(_e1691) + -13i)) << bitcast<u32>(23i)));
                                                     let _e1698 = local_143;
                                                     let _e1701 = local_144;
                                                     let _e1704 = local_145;
-                                                    phi_1243_ = array<f32, 3>((f32(_e1698) * _e1697), (f32(_e1701) * _e1697), (f32(_e1704) * _e1697));
+                                                    phi_1385_ = array<f32, 3>((f32(_e1698) * _e1697), (f32(_e1701) * _e1697), (f32(_e1704) * _e1697));
                                                 }
-                                                let _e1709 = phi_1243_;
+                                                let _e1709 = phi_1385_;
                                                 local_147 = _e1709;
                                                 let _e1710 = local_138;
                                                 let _e1713 = ((_e1710 >> bitcast<u32>(14u)) & 1023u);
                                                 local_148 = _e1713;
                                                 if (_e1713 >= 1023u) {
-                                                    phi_1254_ = 1f;
+                                                    phi_1396_ = 1f;
                                                 } else {
                                                     let _e1715 = local_148;
-                                                    phi_1254_ = (f32(_e1715) * 0.0009775171f);
+                                                    phi_1396_ = (f32(_e1715) * 0.0009775171f);
                                                 }
-                                                let _e1719 = phi_1254_;
+                                                let _e1719 = phi_1396_;
                                                 local_149 = _e1719;
                                                 let _e1720 = local_140;
                                                 let _e1721 = bitcast<f32>(_e1720);
@@ -1796,34 +1796,34 @@ fn function_() {
                                                 let _e1737 = ((_e1734 >> bitcast<u32>(8u)) & 7u);
                                                 local_153 = _e1737;
                                                 if (_e1737 == 0u) {
-                                                    phi_1326_ = type_21(_e1731, _e1732, _e1719, _e1721, _e1725, 0u);
+                                                    phi_1468_ = type_21(_e1731, _e1732, _e1719, _e1721, _e1725, 0u);
                                                 } else {
                                                     let _e1739 = local_153;
                                                     let _e1740 = local_153;
                                                     let _e1741 = (_e1739 * _e1740);
                                                     local_154 = _e1741;
                                                     if (_e1741 <= 1u) {
-                                                        phi_1279_ = 1u;
+                                                        phi_1421_ = 1u;
                                                     } else {
                                                         let _e1743 = local_154;
-                                                        phi_1279_ = select(16u, 4u, (_e1743 <= 4u));
+                                                        phi_1421_ = select(16u, 4u, (_e1743 <= 4u));
                                                     }
-                                                    let _e1747 = phi_1279_;
+                                                    let _e1747 = phi_1421_;
                                                     local_155 = _e1747;
                                                     if (_e1747 == 0u) {
-                                                        phi_2509_ = true;
+                                                        phi_2810_ = true;
                                                         break;
                                                     }
                                                     let _e1749 = local_155;
                                                     local_156 = (32u / _e1749);
                                                     let _e1751 = local_155;
                                                     if (_e1751 >= 32u) {
-                                                        phi_1292_ = 4294967295u;
+                                                        phi_1434_ = 4294967295u;
                                                     } else {
                                                         let _e1753 = local_155;
-                                                        phi_1292_ = ((1u << bitcast<u32>((_e1753 & 31u))) - 1u);
+                                                        phi_1434_ = ((1u << bitcast<u32>((_e1753 & 31u))) - 1u);
                                                     }
-                                                    let _e1759 = phi_1292_;
+                                                    let _e1759 = phi_1434_;
                                                     local_157 = _e1759;
                                                     let _e1760 = local_13;
                                                     let _e1762 = local_16;
@@ -1835,7 +1835,7 @@ fn function_() {
                                                     let _e1772 = (_e1771 == 0u);
                                                     local_159 = _e1772;
                                                     if _e1772 {
-                                                        phi_2509_ = true;
+                                                        phi_2810_ = true;
                                                         break;
                                                     }
                                                     let _e1773 = local_134;
@@ -1844,7 +1844,7 @@ fn function_() {
                                                     local_160 = (_e1776 + (_e1773 / _e1774));
                                                     let _e1778 = local_159;
                                                     if _e1778 {
-                                                        phi_2509_ = true;
+                                                        phi_2810_ = true;
                                                         break;
                                                     }
                                                     let _e1779 = local_134;
@@ -1855,7 +1855,7 @@ fn function_() {
                                                     let _e1785 = local_1;
                                                     if (_e1784 < _e1785) {
                                                     } else {
-                                                        phi_2509_ = true;
+                                                        phi_2810_ = true;
                                                         break;
                                                     }
                                                     let _e1787 = local_160;
@@ -1867,17 +1867,17 @@ fn function_() {
                                                     let _e1799 = local_149;
                                                     let _e1800 = local_150;
                                                     let _e1801 = local_151;
-                                                    phi_1326_ = type_21(_e1797, _e1798, _e1799, _e1800, _e1801, ((_e1790 >> bitcast<u32>((_e1791 & 31u))) & _e1795));
+                                                    phi_1468_ = type_21(_e1797, _e1798, _e1799, _e1800, _e1801, ((_e1790 >> bitcast<u32>((_e1791 & 31u))) & _e1795));
                                                 }
-                                                let _e1804 = phi_1326_;
+                                                let _e1804 = phi_1468_;
                                                 local_162 = _e1804;
                                                 if (_e1804.member_5 != 0u) {
-                                                    phi_1337_ = 1.4142135f;
+                                                    phi_1479_ = 1.4142135f;
                                                 } else {
                                                     let _e1807 = local_162;
-                                                    phi_1337_ = (0.5f * f32((1u << bitcast<u32>((_e1807.member_4 & 31u)))));
+                                                    phi_1479_ = (0.5f * f32((1u << bitcast<u32>((_e1807.member_4 & 31u)))));
                                                 }
-                                                let _e1815 = phi_1337_;
+                                                let _e1815 = phi_1479_;
                                                 local_163 = _e1815;
                                                 let _e1816 = local_162;
                                                 local_164 = _e1816.member_3;
@@ -1888,16 +1888,16 @@ fn function_() {
                                                     let _e1864 = local_13;
                                                     let _e1868 = local_13;
                                                     let _e1873 = local_13;
-                                                    phi_1392_ = (0.5f * ((((2f * _e1860.member_15.member_1) * _e1864.member_15.member) / (_e1868.member_15.member_2 - _e1864.member_15.member)) * _e1873.member_15.member_3));
+                                                    phi_1534_ = (0.5f * ((((2f * _e1860.member_15.member_1) * _e1864.member_15.member) / (_e1868.member_15.member_2 - _e1864.member_15.member)) * _e1873.member_15.member_3));
                                                 } else {
                                                     let _e1820 = local_165;
                                                     if (_e1820 == 0u) {
-                                                        phi_1361_ = false;
+                                                        phi_1503_ = false;
                                                     } else {
                                                         let _e1822 = local_165;
-                                                        phi_1361_ = (_e1822 <= 2139095040u);
+                                                        phi_1503_ = (_e1822 <= 2139095040u);
                                                     }
-                                                    let _e1825 = phi_1361_;
+                                                    let _e1825 = phi_1503_;
                                                     if _e1825 {
                                                         let _e1826 = local_13;
                                                         let _e1830 = local_13;
@@ -1907,30 +1907,30 @@ fn function_() {
                                                         let _e1842 = ((((2f * _e1826.member_15.member_1) * _e1830.member_15.member) / (_e1834.member_15.member_2 - _e1830.member_15.member)) * _e1839.member_15.member_3);
                                                         local_167 = _e1842;
                                                         if (_e1842 == 0f) {
-                                                            phi_1383_ = 0f;
+                                                            phi_1525_ = 0f;
                                                         } else {
                                                             let _e1844 = local_166;
                                                             let _e1845 = local_164;
                                                             let _e1848 = local_167;
-                                                            phi_1383_ = (_e1848 * (1f - (_e1844 / _e1845)));
+                                                            phi_1525_ = (_e1848 * (1f - (_e1844 / _e1845)));
                                                         }
-                                                        let _e1851 = phi_1383_;
-                                                        phi_1384_ = _e1851;
+                                                        let _e1851 = phi_1525_;
+                                                        phi_1526_ = _e1851;
                                                     } else {
-                                                        phi_1384_ = bitcast<f32>(_e335);
+                                                        phi_1526_ = bitcast<f32>(_e335);
                                                     }
-                                                    let _e1853 = phi_1384_;
+                                                    let _e1853 = phi_1526_;
                                                     local_168 = _e1853;
                                                     if (_e1853 < 0f) {
                                                         let _e1855 = local_168;
-                                                        phi_1390_ = -(_e1855);
+                                                        phi_1532_ = -(_e1855);
                                                     } else {
-                                                        phi_1390_ = _e1853;
+                                                        phi_1532_ = _e1853;
                                                     }
-                                                    let _e1858 = phi_1390_;
-                                                    phi_1392_ = (0.5f * _e1858);
+                                                    let _e1858 = phi_1532_;
+                                                    phi_1534_ = (0.5f * _e1858);
                                                 }
-                                                let _e1879 = phi_1392_;
+                                                let _e1879 = phi_1534_;
                                                 let _e1884 = local_163;
                                                 let _e1885 = (select(_e1879, 0f, ((bitcast<u32>(_e1879) & 2147483647u) > 2139095040u)) + _e1884);
                                                 let _e1886 = local_15;
@@ -1968,9 +1968,9 @@ fn function_() {
                                                     let _e1953 = local_110;
                                                     let _e1955 = local_130;
                                                     local_169 = ((_e1949.member_4 + _e1951) | (_e1953.member_5 + _e1955));
-                                                    phi_1489_ = 0u;
+                                                    phi_1631_ = 0u;
                                                     loop {
-                                                        let _e1959 = phi_1489_;
+                                                        let _e1959 = phi_1631_;
                                                         local_170 = _e1959;
                                                         let _e1960 = local_170;
                                                         let _e1961 = local_23;
@@ -1980,19 +1980,19 @@ fn function_() {
                                                             let _e1966 = local_132;
                                                             let _e1971 = local_270;
                                                             let _e1972 = (_e1971 >= f32((2u * (_e1966 << bitcast<u32>((_e1964 & 31u))))));
-                                                            phi_1490_ = select(u32(), _e1964, _e1972);
-                                                            phi_1510_ = _e1972;
+                                                            phi_1632_ = select(u32(), _e1964, _e1972);
+                                                            phi_1652_ = _e1972;
                                                         } else {
-                                                            phi_1490_ = u32();
-                                                            phi_1510_ = false;
+                                                            phi_1632_ = u32();
+                                                            phi_1652_ = false;
                                                         }
-                                                        let _e1975 = phi_1490_;
-                                                        let _e1977 = phi_1510_;
+                                                        let _e1975 = phi_1632_;
+                                                        let _e1977 = phi_1652_;
                                                         local_171 = _e1977;
                                                         continue;
                                                         continuing {
                                                             let _e1978 = local_171;
-                                                            phi_1489_ = _e1975;
+                                                            phi_1631_ = _e1975;
                                                             break if !(_e1978);
                                                         }
                                                     }
@@ -2001,24 +2001,24 @@ fn function_() {
                                                     if ((_e1985 & ((1u << bitcast<u32>((_e1980 & 31u))) - 1u)) == 0u) {
                                                         let _e1988 = local_66;
                                                         let _e1992 = local_65;
-                                                        phi_1526_ = (_e1992 | (1u << bitcast<u32>((_e1988 & 31u))));
+                                                        phi_1668_ = (_e1992 | (1u << bitcast<u32>((_e1988 & 31u))));
                                                     } else {
-                                                        phi_1526_ = _e740;
+                                                        phi_1668_ = _e740;
                                                     }
-                                                    let _e1995 = phi_1526_;
-                                                    phi_1527_ = _e1995;
+                                                    let _e1995 = phi_1668_;
+                                                    phi_1669_ = _e1995;
                                                 } else {
-                                                    phi_1527_ = _e740;
+                                                    phi_1669_ = _e740;
                                                 }
-                                                let _e1997 = phi_1527_;
+                                                let _e1997 = phi_1669_;
                                                 let _e1998 = local_66;
-                                                phi_1564_ = _e1997;
-                                                phi_1565_ = (_e1998 + 1u);
+                                                phi_1706_ = _e1997;
+                                                phi_1707_ = (_e1998 + 1u);
                                             } else {
                                                 let _e1616 = local_110;
                                                 local_172 = _e1616.member;
                                                 if (_e1616.member == 0u) {
-                                                    phi_1544_ = 0u;
+                                                    phi_1686_ = 0u;
                                                 } else {
                                                     let _e1619 = local_41;
                                                     let _e1620 = local_172;
@@ -2026,14 +2026,14 @@ fn function_() {
                                                     local_173 = _e1622;
                                                     if (_e1622 < 1792u) {
                                                     } else {
-                                                        phi_2509_ = true;
+                                                        phi_2810_ = true;
                                                         break;
                                                     }
                                                     let _e1624 = local_173;
                                                     let _e1626 = global_8[_e1624];
-                                                    phi_1544_ = _e1626;
+                                                    phi_1686_ = _e1626;
                                                 }
-                                                let _e1628 = phi_1544_;
+                                                let _e1628 = phi_1686_;
                                                 local_174 = _e1628;
                                                 let _e1629 = local_41;
                                                 let _e1630 = local_172;
@@ -2041,7 +2041,7 @@ fn function_() {
                                                 local_175 = _e1631;
                                                 if (_e1631 < 1792u) {
                                                 } else {
-                                                    phi_2509_ = true;
+                                                    phi_2810_ = true;
                                                     break;
                                                 }
                                                 let _e1633 = local_175;
@@ -2051,81 +2051,81 @@ fn function_() {
                                                 if (_e1638 < (_e1635 - _e1636)) {
                                                     let _e1640 = local_174;
                                                     let _e1641 = local_111;
-                                                    phi_1562_ = (_e1640 + _e1641);
+                                                    phi_1704_ = (_e1640 + _e1641);
                                                 } else {
-                                                    phi_1562_ = _e1635;
+                                                    phi_1704_ = _e1635;
                                                 }
-                                                let _e1644 = phi_1562_;
+                                                let _e1644 = phi_1704_;
                                                 let _e1645 = local_56;
-                                                phi_1564_ = _e740;
-                                                phi_1565_ = (_e1644 - _e1645);
+                                                phi_1706_ = _e740;
+                                                phi_1707_ = (_e1644 - _e1645);
                                             }
-                                            let _e2001 = phi_1564_;
-                                            let _e2003 = phi_1565_;
-                                            phi_2511_ = _e1580;
-                                            phi_1566_ = _e2001;
+                                            let _e2001 = phi_1706_;
+                                            let _e2003 = phi_1707_;
+                                            phi_2812_ = _e1580;
+                                            phi_1708_ = _e2001;
                                             let _e3018 = local_276;
-                                            phi_1567_ = _e3018;
-                                            phi_1568_ = _e2003;
+                                            phi_1709_ = _e3018;
+                                            phi_1710_ = _e2003;
                                         } else {
-                                            phi_2511_ = _e738;
-                                            phi_1566_ = u32();
-                                            phi_1567_ = type_24();
-                                            phi_1568_ = u32();
+                                            phi_2812_ = _e738;
+                                            phi_1708_ = u32();
+                                            phi_1709_ = type_24();
+                                            phi_1710_ = u32();
                                         }
-                                        let _e2005 = phi_2511_;
-                                        let _e2007 = phi_1566_;
-                                        let _e2009 = phi_1567_;
-                                        let _e2011 = phi_1568_;
-                                        phi_2510_ = _e2005;
-                                        phi_546_ = _e2007;
-                                        phi_549_ = _e2009;
-                                        phi_551_ = _e2011;
-                                        phi_1569_ = _e752;
+                                        let _e2005 = phi_2812_;
+                                        let _e2007 = phi_1708_;
+                                        let _e2009 = phi_1709_;
+                                        let _e2011 = phi_1710_;
+                                        phi_2811_ = _e2005;
+                                        phi_688_ = _e2007;
+                                        phi_691_ = _e2009;
+                                        phi_693_ = _e2011;
+                                        phi_1711_ = _e752;
                                     } else {
-                                        phi_2510_ = _e738;
-                                        phi_546_ = u32();
-                                        phi_549_ = type_24();
-                                        phi_551_ = u32();
-                                        phi_1569_ = false;
+                                        phi_2811_ = _e738;
+                                        phi_688_ = u32();
+                                        phi_691_ = type_24();
+                                        phi_693_ = u32();
+                                        phi_1711_ = false;
                                     }
-                                    let _e2013 = phi_2510_;
-                                    let _e2015 = phi_546_;
-                                    let _e2017 = phi_549_;
-                                    let _e2019 = phi_551_;
-                                    let _e2021 = phi_1569_;
+                                    let _e2013 = phi_2811_;
+                                    let _e2015 = phi_688_;
+                                    let _e2017 = phi_691_;
+                                    let _e2019 = phi_693_;
+                                    let _e2021 = phi_1711_;
                                     local_176 = _e2021;
                                     continue;
                                     continuing {
                                         let _e2022 = local_176;
-                                        phi_2463_ = _e2013;
-                                        phi_545_ = _e2015;
-                                        phi_548_ = _e2017;
-                                        phi_550_ = _e2019;
-                                        phi_2509_ = _e2013;
+                                        phi_2764_ = _e2013;
+                                        phi_687_ = _e2015;
+                                        phi_690_ = _e2017;
+                                        phi_692_ = _e2019;
+                                        phi_2810_ = _e2013;
                                         break if !(_e2022);
                                     }
                                 }
-                                let _e2025 = phi_2509_;
-                                phi_2606_ = _e2025;
+                                let _e2025 = phi_2810_;
+                                phi_2926_ = _e2025;
                                 if _e2025 {
                                     break;
                                 }
-                                phi_2544_ = _e2025;
+                                phi_2845_ = _e2025;
                                 let _e3029 = local_277;
-                                phi_1574_ = _e3029;
+                                phi_1716_ = _e3029;
                             } else {
-                                phi_2544_ = _e648;
-                                phi_1574_ = _e695;
+                                phi_2845_ = _e648;
+                                phi_1716_ = _e695;
                             }
-                            let _e2027 = phi_2544_;
-                            let _e2029 = phi_1574_;
+                            let _e2027 = phi_2845_;
+                            let _e2029 = phi_1716_;
                             local_177 = _e2029;
                             local_178 = countOneBits(_e2029);
                             let _e2031 = local;
                             if (_e2031 < 1792u) {
                             } else {
-                                phi_2606_ = true;
+                                phi_2926_ = true;
                                 break;
                             }
                             let _e2033 = local;
@@ -2138,7 +2138,7 @@ fn function_() {
                             local_180 = _e2038;
                             if _e2038 {
                             } else {
-                                phi_2606_ = true;
+                                phi_2926_ = true;
                                 break;
                             }
                             let _e2039 = local_179;
@@ -2146,11 +2146,11 @@ fn function_() {
                             global_8[_e2039] = _e2041;
                             storageBarrier();
                             workgroupBarrier();
-                            phi_1591_ = 1u;
-                            phi_1594_ = 0u;
+                            phi_1871_ = 1u;
+                            phi_1874_ = 0u;
                             loop {
-                                let _e2043 = phi_1591_;
-                                let _e2045 = phi_1594_;
+                                let _e2043 = phi_1871_;
+                                let _e2045 = phi_1874_;
                                 local_181 = _e2043;
                                 local_182 = _e2045;
                                 let _e2046 = local_181;
@@ -2166,7 +2166,7 @@ fn function_() {
                                     local_184 = _e2053;
                                     if (_e2053 < 1792u) {
                                     } else {
-                                        phi_2541_ = true;
+                                        phi_2842_ = true;
                                         break;
                                     }
                                     let _e2055 = local_184;
@@ -2182,17 +2182,17 @@ fn function_() {
                                         local_186 = _e2065;
                                         if (_e2065 < 1792u) {
                                         } else {
-                                            phi_2541_ = true;
+                                            phi_2842_ = true;
                                             break;
                                         }
                                         let _e2067 = local_186;
                                         let _e2069 = global_8[_e2067];
                                         let _e2070 = local_185;
-                                        phi_1630_ = (_e2069 + _e2070);
+                                        phi_1910_ = (_e2069 + _e2070);
                                     } else {
-                                        phi_1630_ = _e2057;
+                                        phi_1910_ = _e2057;
                                     }
-                                    let _e2073 = phi_1630_;
+                                    let _e2073 = phi_1910_;
                                     local_187 = _e2073;
                                     let _e2074 = local_271;
                                     let _e2075 = local;
@@ -2200,7 +2200,7 @@ fn function_() {
                                     local_188 = _e2076;
                                     if (_e2076 < 1792u) {
                                     } else {
-                                        phi_2541_ = true;
+                                        phi_2842_ = true;
                                         break;
                                     }
                                     let _e2078 = local_188;
@@ -2209,25 +2209,25 @@ fn function_() {
                                     storageBarrier();
                                     workgroupBarrier();
                                     let _e2081 = local_181;
-                                    phi_1592_ = (_e2081 * 2u);
-                                    phi_1595_ = _e2050;
+                                    phi_1872_ = (_e2081 * 2u);
+                                    phi_1875_ = _e2050;
                                 } else {
-                                    phi_1592_ = u32();
-                                    phi_1595_ = u32();
+                                    phi_1872_ = u32();
+                                    phi_1875_ = u32();
                                 }
-                                let _e2084 = phi_1592_;
-                                let _e2086 = phi_1595_;
+                                let _e2084 = phi_1872_;
+                                let _e2086 = phi_1875_;
                                 continue;
                                 continuing {
                                     let _e2087 = local_183;
-                                    phi_1591_ = _e2084;
-                                    phi_1594_ = _e2086;
-                                    phi_2541_ = _e2027;
+                                    phi_1871_ = _e2084;
+                                    phi_1874_ = _e2086;
+                                    phi_2842_ = _e2027;
                                     break if !(_e2087);
                                 }
                             }
-                            let _e2090 = phi_2541_;
-                            phi_2606_ = _e2090;
+                            let _e2090 = phi_2842_;
+                            phi_2926_ = _e2090;
                             if _e2090 {
                                 break;
                             }
@@ -2236,7 +2236,7 @@ fn function_() {
                             local_189 = (_e2091 + _e2092);
                             let _e2094 = local;
                             if (_e2094 == 0u) {
-                                phi_1659_ = 0u;
+                                phi_1940_ = 0u;
                             } else {
                                 let _e2096 = local_182;
                                 let _e2097 = local;
@@ -2244,32 +2244,32 @@ fn function_() {
                                 local_190 = _e2099;
                                 if (_e2099 < 1792u) {
                                 } else {
-                                    phi_2606_ = true;
+                                    phi_2926_ = true;
                                     break;
                                 }
                                 let _e2101 = local_190;
                                 let _e2103 = global_8[_e2101];
-                                phi_1659_ = _e2103;
+                                phi_1940_ = _e2103;
                             }
-                            let _e2105 = phi_1659_;
+                            let _e2105 = phi_1940_;
                             let _e2106 = local_189;
                             let _e2108 = local_180;
                             if _e2108 {
                             } else {
-                                phi_2606_ = true;
+                                phi_2926_ = true;
                                 break;
                             }
                             let _e2109 = global_8[_e2039];
                             local_191 = _e2109;
                             if (_e2109 == 0u) {
-                                phi_2557_ = _e2090;
-                                phi_1704_ = 0u;
+                                phi_2877_ = _e2090;
+                                phi_1985_ = 0u;
                             } else {
-                                phi_1676_ = 255u;
-                                phi_1679_ = 0u;
+                                phi_1957_ = 255u;
+                                phi_1960_ = 0u;
                                 loop {
-                                    let _e2112 = phi_1676_;
-                                    let _e2114 = phi_1679_;
+                                    let _e2112 = phi_1957_;
+                                    let _e2114 = phi_1960_;
                                     local_192 = _e2112;
                                     local_193 = _e2114;
                                     local_278 = _e2114;
@@ -2287,7 +2287,7 @@ fn function_() {
                                         local_196 = _e2123;
                                         if (_e2123 < 1792u) {
                                         } else {
-                                            phi_2548_ = true;
+                                            phi_2867_ = true;
                                             break;
                                         }
                                         let _e2125 = local_196;
@@ -2296,54 +2296,54 @@ fn function_() {
                                         let _e2129 = (_e2127 > _e2128);
                                         local_197 = _e2129;
                                         if _e2129 {
-                                            phi_1703_ = _e2114;
+                                            phi_1984_ = _e2114;
                                         } else {
                                             let _e2130 = local_195;
-                                            phi_1703_ = (_e2130 + 1u);
+                                            phi_1984_ = (_e2130 + 1u);
                                         }
-                                        let _e2133 = phi_1703_;
+                                        let _e2133 = phi_1984_;
                                         let _e2134 = local_197;
                                         let _e2135 = local_195;
                                         let _e2136 = local_192;
-                                        phi_1677_ = select(_e2136, _e2135, _e2134);
-                                        phi_1680_ = _e2133;
+                                        phi_1958_ = select(_e2136, _e2135, _e2134);
+                                        phi_1961_ = _e2133;
                                     } else {
-                                        phi_1677_ = u32();
-                                        phi_1680_ = u32();
+                                        phi_1958_ = u32();
+                                        phi_1961_ = u32();
                                     }
-                                    let _e2139 = phi_1677_;
-                                    let _e2141 = phi_1680_;
+                                    let _e2139 = phi_1958_;
+                                    let _e2141 = phi_1961_;
                                     continue;
                                     continuing {
                                         let _e2142 = local_194;
-                                        phi_1676_ = _e2139;
-                                        phi_1679_ = _e2141;
-                                        phi_2548_ = _e2090;
+                                        phi_1957_ = _e2139;
+                                        phi_1960_ = _e2141;
+                                        phi_2867_ = _e2090;
                                         break if !(_e2142);
                                     }
                                 }
-                                let _e2145 = phi_2548_;
-                                phi_2606_ = _e2145;
+                                let _e2145 = phi_2867_;
+                                phi_2926_ = _e2145;
                                 if _e2145 {
                                     break;
                                 }
-                                phi_2557_ = _e2145;
+                                phi_2877_ = _e2145;
                                 let _e3046 = local_278;
-                                phi_1704_ = _e3046;
+                                phi_1985_ = _e3046;
                             }
-                            let _e2147 = phi_2557_;
-                            let _e2149 = phi_1704_;
+                            let _e2147 = phi_2877_;
+                            let _e2149 = phi_1985_;
                             let _e2150 = local_11;
                             let _e2151 = local_12;
-                            phi_2556_ = _e2147;
-                            phi_1707_ = type_24(_e2149, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e2150, _e2151, false);
-                            phi_1710_ = 0u;
-                            phi_1712_ = (_e2106 + _e2105);
+                            phi_2876_ = _e2147;
+                            phi_1988_ = type_24(_e2149, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e2150, _e2151, false);
+                            phi_1991_ = 0u;
+                            phi_1993_ = (_e2106 + _e2105);
                             loop {
-                                let _e2154 = phi_2556_;
-                                let _e2156 = phi_1707_;
-                                let _e2158 = phi_1710_;
-                                let _e2160 = phi_1712_;
+                                let _e2154 = phi_2876_;
+                                let _e2156 = phi_1988_;
+                                let _e2158 = phi_1991_;
+                                let _e2160 = phi_1993_;
                                 local_198 = _e2158;
                                 local_199 = _e2160;
                                 let _e2161 = local_198;
@@ -2354,16 +2354,16 @@ fn function_() {
                                     let _e2164 = local_198;
                                     let _e2168 = local_191;
                                     if ((_e2168 & (1u << bitcast<u32>((_e2164 & 31u)))) == 0u) {
-                                        phi_2605_ = _e2154;
-                                        phi_2370_ = _e2156;
-                                        phi_2371_ = _e2160;
+                                        phi_2925_ = _e2154;
+                                        phi_2651_ = _e2156;
+                                        phi_2652_ = _e2160;
                                     } else {
                                         let _e2171 = local_56;
                                         let _e2172 = local_198;
                                         local_201 = (_e2171 + _e2172);
-                                        phi_1729_ = _e2156;
+                                        phi_2010_ = _e2156;
                                         loop {
-                                            let _e2175 = phi_1729_;
+                                            let _e2175 = phi_2010_;
                                             local_202 = _e2175;
                                             local_279 = _e2175;
                                             let _e2176 = local_202;
@@ -2375,7 +2375,7 @@ fn function_() {
                                                 local_204 = _e2181;
                                                 if (_e2181 < 1792u) {
                                                 } else {
-                                                    phi_2553_ = true;
+                                                    phi_2873_ = true;
                                                     break;
                                                 }
                                                 let _e2183 = local_204;
@@ -2385,36 +2385,36 @@ fn function_() {
                                                 if _e2187 {
                                                     let _e2188 = local_203;
                                                     let _e2190 = local_202;
-                                                    phi_1755_ = type_24((_e2188 + 1u), _e2190.member_1, _e2190.member_2, _e2190.member_3, _e2190.member_4, _e2190.member_5, _e2190.member_6, _e2190.member_7, _e2190.member_8, _e2190.member_9, _e2190.member_10, _e2190.member_11, _e2190.member_12, _e2190.member_13, _e2190.member_14);
+                                                    phi_2036_ = type_24((_e2188 + 1u), _e2190.member_1, _e2190.member_2, _e2190.member_3, _e2190.member_4, _e2190.member_5, _e2190.member_6, _e2190.member_7, _e2190.member_8, _e2190.member_9, _e2190.member_10, _e2190.member_11, _e2190.member_12, _e2190.member_13, _e2190.member_14);
                                                 } else {
-                                                    phi_1755_ = type_24();
+                                                    phi_2036_ = type_24();
                                                 }
-                                                let _e2208 = phi_1755_;
-                                                phi_1730_ = _e2208;
-                                                phi_1756_ = _e2187;
+                                                let _e2208 = phi_2036_;
+                                                phi_2011_ = _e2208;
+                                                phi_2037_ = _e2187;
                                             } else {
-                                                phi_1730_ = type_24();
-                                                phi_1756_ = false;
+                                                phi_2011_ = type_24();
+                                                phi_2037_ = false;
                                             }
-                                            let _e2210 = phi_1730_;
-                                            let _e2212 = phi_1756_;
+                                            let _e2210 = phi_2011_;
+                                            let _e2212 = phi_2037_;
                                             local_205 = _e2212;
                                             continue;
                                             continuing {
                                                 let _e2213 = local_205;
-                                                phi_1729_ = _e2210;
-                                                phi_2553_ = _e2154;
+                                                phi_2010_ = _e2210;
+                                                phi_2873_ = _e2154;
                                                 break if !(_e2213);
                                             }
                                         }
-                                        let _e2216 = phi_2553_;
-                                        phi_2603_ = _e2216;
+                                        let _e2216 = phi_2873_;
+                                        phi_2923_ = _e2216;
                                         if _e2216 {
                                             break;
                                         }
                                         let _e2217 = local_203;
                                         if (_e2217 == 0u) {
-                                            phi_1776_ = 0u;
+                                            phi_2057_ = 0u;
                                         } else {
                                             let _e2219 = local_41;
                                             let _e2220 = local_203;
@@ -2422,14 +2422,14 @@ fn function_() {
                                             local_206 = _e2222;
                                             if (_e2222 < 1792u) {
                                             } else {
-                                                phi_2603_ = true;
+                                                phi_2923_ = true;
                                                 break;
                                             }
                                             let _e2224 = local_206;
                                             let _e2226 = global_8[_e2224];
-                                            phi_1776_ = _e2226;
+                                            phi_2057_ = _e2226;
                                         }
-                                        let _e2228 = phi_1776_;
+                                        let _e2228 = phi_2057_;
                                         let _e2229 = local_201;
                                         local_207 = (_e2229 - _e2228);
                                         let _e2231 = local_202;
@@ -2440,7 +2440,7 @@ fn function_() {
                                             let _e2237 = local_13;
                                             local_209 = _e2237.member_3;
                                             if (_e2237.member_3 == 0u) {
-                                                phi_2603_ = true;
+                                                phi_2923_ = true;
                                                 break;
                                             }
                                             let _e2240 = local_208;
@@ -2451,7 +2451,7 @@ fn function_() {
                                             local_211 = _e2244;
                                             if (_e2244 < 1792u) {
                                             } else {
-                                                phi_2603_ = true;
+                                                phi_2923_ = true;
                                                 break;
                                             }
                                             let _e2246 = local_211;
@@ -2461,7 +2461,7 @@ fn function_() {
                                             let _e2250 = (_e2249 == 0u);
                                             local_213 = _e2250;
                                             if _e2250 {
-                                                phi_2603_ = true;
+                                                phi_2923_ = true;
                                                 break;
                                             }
                                             let _e2251 = local_212;
@@ -2470,7 +2470,7 @@ fn function_() {
                                             local_214 = ((_e2251 % _e2252) * _e2254);
                                             let _e2256 = local_213;
                                             if _e2256 {
-                                                phi_2603_ = true;
+                                                phi_2923_ = true;
                                                 break;
                                             }
                                             let _e2257 = local_212;
@@ -2506,11 +2506,11 @@ fn function_() {
                                             let _e2379 = select(_e2378, _e2375, (_e2375 < _e2376));
                                             local_273 = _e2379;
                                             local_218 = type_24(_e2372.member, _e2372.member_1, _e2372.member_2, _e2372.member_3, _e2372.member_4, _e2372.member_5, _e2372.member_6, _e2379, _e2372.member_8, _e2372.member_9, _e2372.member_10, _e2372.member_11, _e2372.member_12, _e2372.member_13, _e2372.member_14);
-                                            phi_1845_ = (_e2379 - 1u);
-                                            phi_1848_ = 0u;
+                                            phi_2126_ = (_e2379 - 1u);
+                                            phi_2129_ = 0u;
                                             loop {
-                                                let _e2398 = phi_1845_;
-                                                let _e2400 = phi_1848_;
+                                                let _e2398 = phi_2126_;
+                                                let _e2400 = phi_2129_;
                                                 local_219 = _e2398;
                                                 local_220 = _e2400;
                                                 let _e2401 = local_220;
@@ -2525,11 +2525,11 @@ fn function_() {
                                                     local_222 = _e2407;
                                                     if ((_e2406 % 2u) > 0u) {
                                                         let _e2410 = local_222;
-                                                        phi_1872_ = (_e2410 + 1u);
+                                                        phi_2153_ = (_e2410 + 1u);
                                                     } else {
-                                                        phi_1872_ = _e2407;
+                                                        phi_2153_ = _e2407;
                                                     }
-                                                    let _e2413 = phi_1872_;
+                                                    let _e2413 = phi_2153_;
                                                     local_223 = _e2413;
                                                     let _e2414 = local_273;
                                                     if (_e2413 < _e2414) {
@@ -2541,57 +2541,57 @@ fn function_() {
                                                         let _e2421 = local_3;
                                                         if (_e2420 < _e2421) {
                                                         } else {
-                                                            phi_2559_ = true;
+                                                            phi_2879_ = true;
                                                             break;
                                                         }
                                                         let _e2423 = local_224;
                                                         let _e2426 = global_6.member[_e2423];
-                                                        phi_1888_ = _e2426;
+                                                        phi_2169_ = _e2426;
                                                     } else {
-                                                        phi_1888_ = 4294967295u;
+                                                        phi_2169_ = 4294967295u;
                                                     }
-                                                    let _e2428 = phi_1888_;
+                                                    let _e2428 = phi_2169_;
                                                     let _e2429 = local_207;
                                                     let _e2430 = (_e2428 <= _e2429);
                                                     local_225 = _e2430;
                                                     if _e2430 {
-                                                        phi_1894_ = _e2398;
+                                                        phi_2175_ = _e2398;
                                                     } else {
                                                         let _e2431 = local_223;
-                                                        phi_1894_ = (_e2431 - 1u);
+                                                        phi_2175_ = (_e2431 - 1u);
                                                     }
-                                                    let _e2434 = phi_1894_;
+                                                    let _e2434 = phi_2175_;
                                                     let _e2435 = local_225;
                                                     let _e2436 = local_223;
                                                     let _e2437 = local_220;
-                                                    phi_1846_ = _e2434;
-                                                    phi_1849_ = select(_e2437, _e2436, _e2435);
+                                                    phi_2127_ = _e2434;
+                                                    phi_2130_ = select(_e2437, _e2436, _e2435);
                                                 } else {
-                                                    phi_1846_ = u32();
-                                                    phi_1849_ = u32();
+                                                    phi_2127_ = u32();
+                                                    phi_2130_ = u32();
                                                 }
-                                                let _e2440 = phi_1846_;
-                                                let _e2442 = phi_1849_;
+                                                let _e2440 = phi_2127_;
+                                                let _e2442 = phi_2130_;
                                                 continue;
                                                 continuing {
                                                     let _e2443 = local_221;
-                                                    phi_1845_ = _e2440;
-                                                    phi_1848_ = _e2442;
-                                                    phi_2559_ = _e2216;
+                                                    phi_2126_ = _e2440;
+                                                    phi_2129_ = _e2442;
+                                                    phi_2879_ = _e2216;
                                                     break if !(_e2443);
                                                 }
                                             }
-                                            let _e2446 = phi_2559_;
-                                            phi_2603_ = _e2446;
+                                            let _e2446 = phi_2879_;
+                                            phi_2923_ = _e2446;
                                             if _e2446 {
                                                 break;
                                             }
                                             let _e2447 = local_272;
-                                            phi_1898_ = (_e2447 - 1u);
-                                            phi_1901_ = 0u;
+                                            phi_2179_ = (_e2447 - 1u);
+                                            phi_2182_ = 0u;
                                             loop {
-                                                let _e2450 = phi_1898_;
-                                                let _e2452 = phi_1901_;
+                                                let _e2450 = phi_2179_;
+                                                let _e2452 = phi_2182_;
                                                 local_226 = _e2450;
                                                 local_227 = _e2452;
                                                 let _e2453 = local_227;
@@ -2606,11 +2606,11 @@ fn function_() {
                                                     local_229 = _e2459;
                                                     if ((_e2458 % 2u) > 0u) {
                                                         let _e2462 = local_229;
-                                                        phi_1925_ = (_e2462 + 1u);
+                                                        phi_2206_ = (_e2462 + 1u);
                                                     } else {
-                                                        phi_1925_ = _e2459;
+                                                        phi_2206_ = _e2459;
                                                     }
-                                                    let _e2465 = phi_1925_;
+                                                    let _e2465 = phi_2206_;
                                                     local_230 = _e2465;
                                                     let _e2466 = local_220;
                                                     let _e2467 = local_273;
@@ -2624,48 +2624,48 @@ fn function_() {
                                                         let _e2476 = local_3;
                                                         if (_e2475 < _e2476) {
                                                         } else {
-                                                            phi_2568_ = true;
+                                                            phi_2888_ = true;
                                                             break;
                                                         }
                                                         let _e2478 = local_231;
                                                         let _e2481 = global_6.member[_e2478];
-                                                        phi_1941_ = _e2481;
+                                                        phi_2222_ = _e2481;
                                                     } else {
-                                                        phi_1941_ = 4294967295u;
+                                                        phi_2222_ = 4294967295u;
                                                     }
-                                                    let _e2483 = phi_1941_;
+                                                    let _e2483 = phi_2222_;
                                                     let _e2484 = local_207;
                                                     let _e2485 = (_e2483 <= _e2484);
                                                     local_232 = _e2485;
                                                     if _e2485 {
-                                                        phi_1947_ = _e2450;
+                                                        phi_2228_ = _e2450;
                                                     } else {
                                                         let _e2486 = local_230;
-                                                        phi_1947_ = (_e2486 - 1u);
+                                                        phi_2228_ = (_e2486 - 1u);
                                                     }
-                                                    let _e2489 = phi_1947_;
+                                                    let _e2489 = phi_2228_;
                                                     let _e2490 = local_232;
                                                     let _e2491 = local_230;
                                                     let _e2492 = local_227;
-                                                    phi_1899_ = _e2489;
-                                                    phi_1902_ = select(_e2492, _e2491, _e2490);
+                                                    phi_2180_ = _e2489;
+                                                    phi_2183_ = select(_e2492, _e2491, _e2490);
                                                 } else {
-                                                    phi_1899_ = u32();
-                                                    phi_1902_ = u32();
+                                                    phi_2180_ = u32();
+                                                    phi_2183_ = u32();
                                                 }
-                                                let _e2495 = phi_1899_;
-                                                let _e2497 = phi_1902_;
+                                                let _e2495 = phi_2180_;
+                                                let _e2497 = phi_2183_;
                                                 continue;
                                                 continuing {
                                                     let _e2498 = local_228;
-                                                    phi_1898_ = _e2495;
-                                                    phi_1901_ = _e2497;
-                                                    phi_2568_ = _e2446;
+                                                    phi_2179_ = _e2495;
+                                                    phi_2182_ = _e2497;
+                                                    phi_2888_ = _e2446;
                                                     break if !(_e2498);
                                                 }
                                             }
-                                            let _e2501 = phi_2568_;
-                                            phi_2603_ = _e2501;
+                                            let _e2501 = phi_2888_;
+                                            phi_2923_ = _e2501;
                                             if _e2501 {
                                                 break;
                                             }
@@ -2688,16 +2688,16 @@ fn function_() {
                                                 let _e2547 = local_3;
                                                 if (_e2546 < _e2547) {
                                                 } else {
-                                                    phi_2603_ = true;
+                                                    phi_2923_ = true;
                                                     break;
                                                 }
                                                 let _e2549 = local_235;
                                                 let _e2552 = global_6.member[_e2549];
-                                                phi_1966_ = _e2552;
+                                                phi_2247_ = _e2552;
                                             } else {
-                                                phi_1966_ = 4294967295u;
+                                                phi_2247_ = 4294967295u;
                                             }
-                                            let _e2554 = phi_1966_;
+                                            let _e2554 = phi_2247_;
                                             let _e2555 = local_233;
                                             local_236 = type_24(_e2555.member, _e2555.member_1, _e2555.member_2, _e2555.member_3, _e2555.member_4, _e2555.member_5, _e2555.member_6, _e2555.member_7, _e2555.member_8, _e2555.member_9, _e2554, _e2555.member_11, _e2555.member_12, _e2555.member_13, _e2555.member_14);
                                             let _e2572 = local_227;
@@ -2716,17 +2716,17 @@ fn function_() {
                                                     let _e2601 = local_3;
                                                     if (_e2600 < _e2601) {
                                                     } else {
-                                                        phi_2603_ = true;
+                                                        phi_2923_ = true;
                                                         break;
                                                     }
                                                     let _e2603 = local_238;
                                                     let _e2606 = global_6.member[_e2603];
-                                                    phi_1989_ = _e2606;
+                                                    phi_2270_ = _e2606;
                                                 } else {
-                                                    phi_1989_ = 4294967295u;
+                                                    phi_2270_ = 4294967295u;
                                                 }
-                                                let _e2608 = phi_1989_;
-                                                phi_2007_ = _e2608;
+                                                let _e2608 = phi_2270_;
+                                                phi_2288_ = _e2608;
                                             } else {
                                                 let _e2576 = local_220;
                                                 let _e2577 = (_e2576 + 1u);
@@ -2741,19 +2741,19 @@ fn function_() {
                                                     let _e2585 = local_3;
                                                     if (_e2584 < _e2585) {
                                                     } else {
-                                                        phi_2603_ = true;
+                                                        phi_2923_ = true;
                                                         break;
                                                     }
                                                     let _e2587 = local_240;
                                                     let _e2590 = global_6.member[_e2587];
-                                                    phi_2006_ = _e2590;
+                                                    phi_2287_ = _e2590;
                                                 } else {
-                                                    phi_2006_ = 4294967295u;
+                                                    phi_2287_ = 4294967295u;
                                                 }
-                                                let _e2592 = phi_2006_;
-                                                phi_2007_ = _e2592;
+                                                let _e2592 = phi_2287_;
+                                                phi_2288_ = _e2592;
                                             }
-                                            let _e2610 = phi_2007_;
+                                            let _e2610 = phi_2288_;
                                             let _e2611 = local_236;
                                             let _e2628 = local_215;
                                             let _e2629 = local_217;
@@ -2764,21 +2764,21 @@ fn function_() {
                                             let _e2639 = local_3;
                                             if (((_e2628 * _e2629) + ((_e2634 + (_e2631 * _e2632)) + _e2636)) < _e2639) {
                                             } else {
-                                                phi_2603_ = true;
+                                                phi_2923_ = true;
                                                 break;
                                             }
-                                            phi_2577_ = _e2501;
-                                            phi_2119_ = type_24(_e2611.member, _e2611.member_1, _e2611.member_2, _e2611.member_3, _e2611.member_4, _e2611.member_5, _e2611.member_6, _e2611.member_7, _e2611.member_8, _e2611.member_9, _e2611.member_10, _e2610, _e2611.member_12, _e2611.member_13, _e2611.member_14);
+                                            phi_2897_ = _e2501;
+                                            phi_2400_ = type_24(_e2611.member, _e2611.member_1, _e2611.member_2, _e2611.member_3, _e2611.member_4, _e2611.member_5, _e2611.member_6, _e2611.member_7, _e2611.member_8, _e2611.member_9, _e2611.member_10, _e2610, _e2611.member_12, _e2611.member_13, _e2611.member_14);
                                         } else {
-                                            phi_2577_ = _e2216;
+                                            phi_2897_ = _e2216;
                                             let _e3080 = local_279;
-                                            phi_2119_ = _e3080;
+                                            phi_2400_ = _e3080;
                                         }
-                                        let _e2642 = phi_2577_;
-                                        let _e2644 = phi_2119_;
-                                        phi_2121_ = _e2644;
+                                        let _e2642 = phi_2897_;
+                                        let _e2644 = phi_2400_;
+                                        phi_2402_ = _e2644;
                                         loop {
-                                            let _e2646 = phi_2121_;
+                                            let _e2646 = phi_2402_;
                                             local_241 = _e2646;
                                             local_280 = _e2646;
                                             let _e2647 = local_241;
@@ -2795,12 +2795,12 @@ fn function_() {
                                                 local_245 = _e2656;
                                                 if _e2656 {
                                                     let _e2660 = local_241;
-                                                    phi_2143_ = _e2660.member_9;
+                                                    phi_2424_ = _e2660.member_9;
                                                 } else {
                                                     let _e2657 = local_241;
-                                                    phi_2143_ = (_e2657.member_9 + 1u);
+                                                    phi_2424_ = (_e2657.member_9 + 1u);
                                                 }
-                                                let _e2663 = phi_2143_;
+                                                let _e2663 = phi_2424_;
                                                 local_246 = _e2663;
                                                 let _e2664 = local_245;
                                                 let _e2665 = local_243;
@@ -2823,16 +2823,16 @@ fn function_() {
                                                     let _e2712 = local_3;
                                                     if (_e2711 < _e2712) {
                                                     } else {
-                                                        phi_2574_ = true;
+                                                        phi_2894_ = true;
                                                         break;
                                                     }
                                                     let _e2714 = local_250;
                                                     let _e2717 = global_6.member[_e2714];
-                                                    phi_2164_ = _e2717;
+                                                    phi_2445_ = _e2717;
                                                 } else {
-                                                    phi_2164_ = 4294967295u;
+                                                    phi_2445_ = 4294967295u;
                                                 }
-                                                let _e2719 = phi_2164_;
+                                                let _e2719 = phi_2445_;
                                                 let _e2720 = local_247;
                                                 local_251 = type_24(_e2720.member, _e2720.member_1, _e2720.member_2, _e2720.member_3, _e2720.member_4, _e2720.member_5, _e2720.member_6, _e2720.member_7, _e2720.member_8, _e2720.member_9, _e2719, _e2720.member_11, _e2720.member_12, _e2720.member_13, _e2720.member_14);
                                                 let _e2737 = local_274;
@@ -2851,17 +2851,17 @@ fn function_() {
                                                         let _e2770 = local_3;
                                                         if (_e2769 < _e2770) {
                                                         } else {
-                                                            phi_2574_ = true;
+                                                            phi_2894_ = true;
                                                             break;
                                                         }
                                                         let _e2772 = local_253;
                                                         let _e2775 = global_6.member[_e2772];
-                                                        phi_2190_ = _e2775;
+                                                        phi_2471_ = _e2775;
                                                     } else {
-                                                        phi_2190_ = 4294967295u;
+                                                        phi_2471_ = 4294967295u;
                                                     }
-                                                    let _e2777 = phi_2190_;
-                                                    phi_2210_ = _e2777;
+                                                    let _e2777 = phi_2471_;
+                                                    phi_2491_ = _e2777;
                                                 } else {
                                                     let _e2741 = local_246;
                                                     let _e2742 = (_e2741 + 1u);
@@ -2876,19 +2876,19 @@ fn function_() {
                                                         let _e2752 = local_3;
                                                         if (_e2751 < _e2752) {
                                                         } else {
-                                                            phi_2574_ = true;
+                                                            phi_2894_ = true;
                                                             break;
                                                         }
                                                         let _e2754 = local_255;
                                                         let _e2757 = global_6.member[_e2754];
-                                                        phi_2209_ = _e2757;
+                                                        phi_2490_ = _e2757;
                                                     } else {
-                                                        phi_2209_ = 4294967295u;
+                                                        phi_2490_ = 4294967295u;
                                                     }
-                                                    let _e2759 = phi_2209_;
-                                                    phi_2210_ = _e2759;
+                                                    let _e2759 = phi_2490_;
+                                                    phi_2491_ = _e2759;
                                                 }
-                                                let _e2779 = phi_2210_;
+                                                let _e2779 = phi_2491_;
                                                 let _e2780 = local_251;
                                                 let _e2797 = local_13;
                                                 let _e2799 = local_13;
@@ -2898,24 +2898,24 @@ fn function_() {
                                                 let _e2810 = local_3;
                                                 if (((_e2797.member_4 * _e2799.member_5) + ((_e2802.member_3 + (_e2804 * _e2797.member_4)) + _e2807)) < _e2810) {
                                                 } else {
-                                                    phi_2574_ = true;
+                                                    phi_2894_ = true;
                                                     break;
                                                 }
-                                                phi_2122_ = type_24(_e2780.member, _e2780.member_1, _e2780.member_2, _e2780.member_3, _e2780.member_4, _e2780.member_5, _e2780.member_6, _e2780.member_7, _e2780.member_8, _e2780.member_9, _e2780.member_10, _e2779, _e2780.member_12, _e2780.member_13, _e2780.member_14);
+                                                phi_2403_ = type_24(_e2780.member, _e2780.member_1, _e2780.member_2, _e2780.member_3, _e2780.member_4, _e2780.member_5, _e2780.member_6, _e2780.member_7, _e2780.member_8, _e2780.member_9, _e2780.member_10, _e2779, _e2780.member_12, _e2780.member_13, _e2780.member_14);
                                             } else {
-                                                phi_2122_ = type_24();
+                                                phi_2403_ = type_24();
                                             }
-                                            let _e2813 = phi_2122_;
+                                            let _e2813 = phi_2403_;
                                             continue;
                                             continuing {
                                                 let _e2814 = local_242;
-                                                phi_2121_ = _e2813;
-                                                phi_2574_ = _e2642;
+                                                phi_2402_ = _e2813;
+                                                phi_2894_ = _e2642;
                                                 break if !(_e2814);
                                             }
                                         }
-                                        let _e2817 = phi_2574_;
-                                        phi_2603_ = _e2817;
+                                        let _e2817 = phi_2894_;
+                                        phi_2923_ = _e2817;
                                         if _e2817 {
                                             break;
                                         }
@@ -2930,7 +2930,7 @@ fn function_() {
                                         let _e2826 = local_13;
                                         local_260 = _e2826.member_3;
                                         if (_e2826.member_3 == 0u) {
-                                            phi_2603_ = true;
+                                            phi_2923_ = true;
                                             break;
                                         }
                                         let _e2829 = local_259;
@@ -2951,7 +2951,7 @@ fn function_() {
                                         let _e2853 = local_1;
                                         if (_e2852 < _e2853) {
                                         } else {
-                                            phi_2603_ = true;
+                                            phi_2923_ = true;
                                             break;
                                         }
                                         let _e2855 = local_262;
@@ -2961,7 +2961,7 @@ fn function_() {
                                         let _e2860 = local_8;
                                         if (_e2859 < _e2860) {
                                         } else {
-                                            phi_2603_ = true;
+                                            phi_2923_ = true;
                                             break;
                                         }
                                         let _e2862 = local_199;
@@ -2971,49 +2971,49 @@ fn function_() {
                                         let _e2867 = local_9;
                                         if (_e2866 < _e2867) {
                                         } else {
-                                            phi_2603_ = true;
+                                            phi_2923_ = true;
                                             break;
                                         }
                                         let _e2869 = local_199;
                                         let _e2872 = local_261;
                                         global_12.member[_e2869] = _e2872;
                                         let _e2873 = local_199;
-                                        phi_2605_ = _e2817;
+                                        phi_2925_ = _e2817;
                                         let _e3092 = local_280;
-                                        phi_2370_ = _e3092;
-                                        phi_2371_ = (_e2873 + 1u);
+                                        phi_2651_ = _e3092;
+                                        phi_2652_ = (_e2873 + 1u);
                                     }
-                                    let _e2876 = phi_2605_;
-                                    let _e2878 = phi_2370_;
-                                    let _e2880 = phi_2371_;
+                                    let _e2876 = phi_2925_;
+                                    let _e2878 = phi_2651_;
+                                    let _e2880 = phi_2652_;
                                     let _e2881 = local_198;
-                                    phi_2604_ = _e2876;
-                                    phi_1708_ = _e2878;
-                                    phi_1711_ = (_e2881 + 1u);
-                                    phi_1713_ = _e2880;
+                                    phi_2924_ = _e2876;
+                                    phi_1989_ = _e2878;
+                                    phi_1992_ = (_e2881 + 1u);
+                                    phi_1994_ = _e2880;
                                 } else {
-                                    phi_2604_ = _e2154;
-                                    phi_1708_ = type_24();
-                                    phi_1711_ = u32();
-                                    phi_1713_ = u32();
+                                    phi_2924_ = _e2154;
+                                    phi_1989_ = type_24();
+                                    phi_1992_ = u32();
+                                    phi_1994_ = u32();
                                 }
-                                let _e2884 = phi_2604_;
-                                let _e2886 = phi_1708_;
-                                let _e2888 = phi_1711_;
-                                let _e2890 = phi_1713_;
+                                let _e2884 = phi_2924_;
+                                let _e2886 = phi_1989_;
+                                let _e2888 = phi_1992_;
+                                let _e2890 = phi_1994_;
                                 continue;
                                 continuing {
                                     let _e2891 = local_200;
-                                    phi_2556_ = _e2884;
-                                    phi_1707_ = _e2886;
-                                    phi_1710_ = _e2888;
-                                    phi_1712_ = _e2890;
-                                    phi_2603_ = _e2884;
+                                    phi_2876_ = _e2884;
+                                    phi_1988_ = _e2886;
+                                    phi_1991_ = _e2888;
+                                    phi_1993_ = _e2890;
+                                    phi_2923_ = _e2884;
                                     break if !(_e2891);
                                 }
                             }
-                            let _e2894 = phi_2603_;
-                            phi_2606_ = _e2894;
+                            let _e2894 = phi_2923_;
+                            phi_2926_ = _e2894;
                             if _e2894 {
                                 break;
                             }
@@ -3022,7 +3022,7 @@ fn function_() {
                             local_264 = _e2896;
                             if (_e2896 < 1792u) {
                             } else {
-                                phi_2606_ = true;
+                                phi_2926_ = true;
                                 break;
                             }
                             let _e2898 = local_264;
@@ -3033,32 +3033,32 @@ fn function_() {
                             let _e2903 = local_266;
                             let _e2905 = local_53;
                             let _e2907 = local_52;
-                            phi_2607_ = _e2894;
-                            phi_469_ = (_e2907 + 1u);
-                            phi_472_ = (_e2905 + (256u * _e2903));
-                            phi_474_ = (_e2901 + _e2900);
+                            phi_2927_ = _e2894;
+                            phi_611_ = (_e2907 + 1u);
+                            phi_614_ = (_e2905 + (256u * _e2903));
+                            phi_616_ = (_e2901 + _e2900);
                         } else {
-                            phi_2607_ = _e648;
-                            phi_469_ = u32();
-                            phi_472_ = u32();
-                            phi_474_ = u32();
+                            phi_2927_ = _e648;
+                            phi_611_ = u32();
+                            phi_614_ = u32();
+                            phi_616_ = u32();
                         }
-                        let _e2910 = phi_2607_;
-                        let _e2912 = phi_469_;
-                        let _e2914 = phi_472_;
-                        let _e2916 = phi_474_;
+                        let _e2910 = phi_2927_;
+                        let _e2912 = phi_611_;
+                        let _e2914 = phi_614_;
+                        let _e2916 = phi_616_;
                         continue;
                         continuing {
                             let _e2917 = local_55;
-                            phi_2456_ = _e2910;
-                            phi_468_ = _e2912;
-                            phi_471_ = _e2914;
-                            phi_473_ = _e2916;
-                            phi_2606_ = _e2910;
+                            phi_2756_ = _e2910;
+                            phi_610_ = _e2912;
+                            phi_613_ = _e2914;
+                            phi_615_ = _e2916;
+                            phi_2926_ = _e2910;
                             break if !(_e2917);
                         }
                     }
-                    let _e2920 = phi_2606_;
+                    let _e2920 = phi_2926_;
                     if _e2920 {
                         break;
                     }

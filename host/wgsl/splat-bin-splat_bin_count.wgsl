@@ -294,26 +294,26 @@ fn function_() {
     var local_196: u32;
     var local_197: u32;
     var local_198: u32;
-    var local_199: bool;
-    var local_200: u32;
+    var local_199: u32;
+    var local_200: bool;
     var local_201: u32;
     var local_202: u32;
     var local_203: u32;
-    var local_204: bool;
+    var local_204: u32;
     var local_205: u32;
-    var local_206: u32;
+    var local_206: bool;
     var local_207: u32;
     var local_208: u32;
-    var local_209: bool;
+    var local_209: u32;
     var local_210: u32;
     var local_211: u32;
-    var local_212: u32;
+    var local_212: bool;
     var local_213: u32;
-    var local_214: bool;
+    var local_214: u32;
     var local_215: u32;
     var local_216: u32;
     var local_217: u32;
-    var local_218: u32;
+    var local_218: bool;
     var local_219: u32;
     var local_220: u32;
     var local_221: u32;
@@ -330,170 +330,170 @@ fn function_() {
     var local_232: u32;
     var local_233: u32;
     var local_234: f32;
-    var phi_323_: bool;
-    var phi_334_: u32;
-    var phi_336_: u32;
-    var phi_337_: u32;
-    var phi_338_: u32;
-    var phi_339_: u32;
-    var phi_340_: u32;
-    var phi_341_: u32;
-    var phi_342_: u32;
-    var phi_343_: u32;
-    var phi_344_: u32;
-    var phi_345_: u32;
-    var phi_346_: u32;
-    var phi_347_: u32;
+    var phi_342_: bool;
+    var phi_353_: u32;
+    var phi_355_: u32;
+    var phi_356_: u32;
+    var phi_357_: u32;
+    var phi_358_: u32;
+    var phi_359_: u32;
+    var phi_360_: u32;
+    var phi_361_: u32;
+    var phi_362_: u32;
     var phi_363_: u32;
-    var phi_366_: u32;
-    var phi_402_: u32;
     var phi_364_: u32;
-    var phi_367_: u32;
-    var phi_2033_: bool;
-    var phi_2059_: bool;
-    var phi_445_: u32;
-    var phi_448_: u32;
-    var phi_450_: u32;
-    var phi_452_: u32;
-    var phi_454_: u32;
-    var phi_456_: u32;
-    var phi_458_: u32;
-    var phi_460_: u32;
-    var phi_469_: u32;
-    var phi_472_: u32;
-    var phi_496_: u32;
-    var phi_470_: u32;
-    var phi_473_: u32;
-    var phi_2055_: bool;
-    var phi_2066_: bool;
-    var phi_499_: u32;
-    var phi_502_: u32;
-    var phi_504_: u32;
-    var phi_506_: u32;
-    var phi_508_: u32;
-    var phi_510_: u32;
-    var phi_512_: type_24;
-    var phi_514_: u32;
-    var phi_529_: type_24;
-    var phi_555_: type_24;
-    var phi_530_: type_24;
-    var phi_556_: bool;
-    var phi_2062_: bool;
-    var phi_576_: u32;
-    var phi_645_: u32;
-    var phi_648_: u32;
+    var phi_365_: u32;
+    var phi_366_: u32;
+    var phi_520_: u32;
+    var phi_523_: u32;
+    var phi_559_: u32;
+    var phi_521_: u32;
+    var phi_524_: u32;
+    var phi_2621_: bool;
+    var phi_2665_: bool;
+    var phi_603_: u32;
+    var phi_606_: u32;
+    var phi_608_: u32;
+    var phi_610_: u32;
+    var phi_612_: u32;
+    var phi_614_: u32;
+    var phi_616_: u32;
+    var phi_618_: u32;
+    var phi_627_: u32;
+    var phi_630_: u32;
+    var phi_654_: u32;
+    var phi_628_: u32;
+    var phi_631_: u32;
+    var phi_2661_: bool;
+    var phi_2673_: bool;
+    var phi_657_: u32;
+    var phi_660_: u32;
+    var phi_662_: u32;
+    var phi_664_: u32;
+    var phi_666_: u32;
+    var phi_668_: u32;
+    var phi_670_: type_24;
     var phi_672_: u32;
-    var phi_688_: u32;
-    var phi_694_: u32;
-    var phi_646_: u32;
-    var phi_649_: u32;
-    var phi_2067_: bool;
-    var phi_698_: u32;
-    var phi_701_: u32;
-    var phi_725_: u32;
-    var phi_741_: u32;
-    var phi_747_: u32;
-    var phi_699_: u32;
-    var phi_702_: u32;
-    var phi_2076_: bool;
-    var phi_766_: u32;
+    var phi_687_: type_24;
+    var phi_713_: type_24;
+    var phi_688_: type_24;
+    var phi_714_: bool;
+    var phi_2669_: bool;
+    var phi_734_: u32;
+    var phi_803_: u32;
     var phi_806_: u32;
-    var phi_789_: u32;
+    var phi_830_: u32;
+    var phi_846_: u32;
+    var phi_852_: u32;
+    var phi_804_: u32;
     var phi_807_: u32;
-    var phi_2097_: bool;
-    var phi_919_: type_24;
-    var phi_921_: type_24;
-    var phi_943_: u32;
+    var phi_2674_: bool;
+    var phi_856_: u32;
+    var phi_859_: u32;
+    var phi_883_: u32;
+    var phi_899_: u32;
+    var phi_905_: u32;
+    var phi_857_: u32;
+    var phi_860_: u32;
+    var phi_2683_: bool;
+    var phi_924_: u32;
     var phi_964_: u32;
-    var phi_1009_: u32;
-    var phi_990_: u32;
-    var phi_1010_: u32;
-    var phi_922_: type_24;
-    var phi_2082_: bool;
-    var phi_1617_: u32;
-    var phi_1635_: u32;
-    var phi_1207_: array<f32, 3>;
-    var phi_1218_: f32;
-    var phi_1243_: u32;
-    var phi_1256_: u32;
-    var phi_1290_: type_21;
-    var phi_1301_: f32;
-    var phi_1325_: bool;
-    var phi_1347_: f32;
-    var phi_1348_: f32;
-    var phi_1354_: f32;
-    var phi_1356_: f32;
-    var phi_1457_: u32;
-    var phi_1458_: u32;
-    var phi_1478_: bool;
-    var phi_1492_: u32;
-    var phi_1493_: u32;
-    var phi_1513_: bool;
-    var phi_1527_: u32;
-    var phi_1528_: u32;
-    var phi_1548_: bool;
-    var phi_1562_: u32;
-    var phi_1563_: u32;
-    var phi_1583_: bool;
-    var phi_1595_: u32;
-    var phi_1596_: u32;
-    var phi_1597_: u32;
-    var phi_1598_: u32;
-    var phi_1599_: u32;
-    var phi_1600_: u32;
-    var phi_1637_: u32;
-    var phi_1638_: u32;
-    var phi_1639_: u32;
-    var phi_1640_: u32;
-    var phi_1641_: u32;
-    var phi_1642_: u32;
-    var phi_1643_: u32;
-    var phi_2113_: bool;
-    var phi_1644_: u32;
-    var phi_1645_: u32;
-    var phi_1646_: u32;
-    var phi_1647_: u32;
-    var phi_1648_: u32;
-    var phi_1649_: u32;
-    var phi_1650_: type_24;
+    var phi_947_: u32;
+    var phi_965_: u32;
+    var phi_2704_: bool;
+    var phi_1077_: type_24;
+    var phi_1079_: type_24;
+    var phi_1101_: u32;
+    var phi_1122_: u32;
+    var phi_1167_: u32;
+    var phi_1148_: u32;
+    var phi_1168_: u32;
+    var phi_1080_: type_24;
+    var phi_2689_: bool;
+    var phi_1775_: u32;
+    var phi_1793_: u32;
+    var phi_1365_: array<f32, 3>;
+    var phi_1376_: f32;
+    var phi_1401_: u32;
+    var phi_1414_: u32;
+    var phi_1448_: type_21;
+    var phi_1459_: f32;
+    var phi_1483_: bool;
+    var phi_1505_: f32;
+    var phi_1506_: f32;
+    var phi_1512_: f32;
+    var phi_1514_: f32;
+    var phi_1615_: u32;
+    var phi_1616_: u32;
+    var phi_1636_: bool;
+    var phi_1650_: u32;
     var phi_1651_: u32;
-    var phi_2112_: bool;
-    var phi_500_: u32;
-    var phi_503_: u32;
-    var phi_505_: u32;
-    var phi_507_: u32;
-    var phi_509_: u32;
-    var phi_511_: u32;
-    var phi_513_: type_24;
-    var phi_515_: u32;
-    var phi_1652_: bool;
-    var phi_2111_: bool;
-    var phi_1665_: u32;
-    var phi_2152_: bool;
-    var phi_446_: u32;
-    var phi_449_: u32;
-    var phi_451_: u32;
-    var phi_453_: u32;
-    var phi_455_: u32;
-    var phi_457_: u32;
-    var phi_459_: u32;
-    var phi_461_: u32;
-    var phi_2151_: bool;
-    var phi_1714_: u32;
-    var phi_1715_: u32;
-    var phi_2154_: bool;
-    var phi_1760_: u32;
-    var phi_1761_: u32;
-    var phi_2158_: bool;
+    var phi_1671_: bool;
+    var phi_1685_: u32;
+    var phi_1686_: u32;
+    var phi_1706_: bool;
+    var phi_1720_: u32;
+    var phi_1721_: u32;
+    var phi_1741_: bool;
+    var phi_1753_: u32;
+    var phi_1754_: u32;
+    var phi_1755_: u32;
+    var phi_1756_: u32;
+    var phi_1757_: u32;
+    var phi_1758_: u32;
+    var phi_1795_: u32;
+    var phi_1796_: u32;
+    var phi_1797_: u32;
+    var phi_1798_: u32;
+    var phi_1799_: u32;
+    var phi_1800_: u32;
+    var phi_1801_: u32;
+    var phi_2720_: bool;
+    var phi_1802_: u32;
+    var phi_1803_: u32;
+    var phi_1804_: u32;
+    var phi_1805_: u32;
     var phi_1806_: u32;
     var phi_1807_: u32;
-    var phi_2162_: bool;
-    var phi_1852_: u32;
-    var phi_1853_: u32;
-    var phi_2166_: bool;
-    var phi_1898_: u32;
-    var phi_1899_: u32;
-    var phi_2170_: bool;
+    var phi_1808_: type_24;
+    var phi_1809_: u32;
+    var phi_2719_: bool;
+    var phi_658_: u32;
+    var phi_661_: u32;
+    var phi_663_: u32;
+    var phi_665_: u32;
+    var phi_667_: u32;
+    var phi_669_: u32;
+    var phi_671_: type_24;
+    var phi_673_: u32;
+    var phi_1810_: bool;
+    var phi_2718_: bool;
+    var phi_1823_: u32;
+    var phi_2759_: bool;
+    var phi_604_: u32;
+    var phi_607_: u32;
+    var phi_609_: u32;
+    var phi_611_: u32;
+    var phi_613_: u32;
+    var phi_615_: u32;
+    var phi_617_: u32;
+    var phi_619_: u32;
+    var phi_2758_: bool;
+    var phi_1958_: u32;
+    var phi_1959_: u32;
+    var phi_2761_: bool;
+    var phi_2091_: u32;
+    var phi_2092_: u32;
+    var phi_2783_: bool;
+    var phi_2224_: u32;
+    var phi_2225_: u32;
+    var phi_2807_: bool;
+    var phi_2357_: u32;
+    var phi_2358_: u32;
+    var phi_2831_: bool;
+    var phi_2490_: u32;
+    var phi_2491_: u32;
+    var phi_2855_: bool;
     var local_235: type_24;
     var local_236: type_24;
     var local_237: u32;
@@ -555,8 +555,8 @@ fn function_() {
             if (_e348 < (_e346 * _e346)) {
                 let _e350 = local_16;
                 if _e350 {
-                    phi_344_ = 0u;
-                    phi_345_ = 0u;
+                    phi_363_ = 0u;
+                    phi_364_ = 0u;
                 } else {
                     let _e351 = local_9;
                     local_18 = bitcast<i32>(_e351);
@@ -614,7 +614,7 @@ fn function_() {
                                     let _e402 = local_26;
                                     let _e403 = local_15;
                                     if (_e402 == _e403) {
-                                        phi_323_ = true;
+                                        phi_342_ = true;
                                     } else {
                                         let _e405 = local_11;
                                         let _e407 = local_11;
@@ -641,9 +641,9 @@ fn function_() {
                                         let _e462 = select(0f, _e460, (_e460 > 0f));
                                         let _e466 = local_27;
                                         let _e467 = local_27;
-                                        phi_323_ = (((_e454 * _e454) + (_e462 * _e462)) <= (_e466 * _e467));
+                                        phi_342_ = (((_e454 * _e454) + (_e462 * _e462)) <= (_e466 * _e467));
                                     }
-                                    let _e471 = phi_323_;
+                                    let _e471 = phi_342_;
                                     local_28 = _e471;
                                     if _e471 {
                                         let _e472 = local_26;
@@ -654,58 +654,58 @@ fn function_() {
                                         }
                                         let _e475 = local_26;
                                         let _e478 = global_5.member[_e475];
-                                        phi_334_ = _e478;
+                                        phi_353_ = _e478;
                                     } else {
-                                        phi_334_ = 0u;
+                                        phi_353_ = 0u;
                                     }
-                                    let _e480 = phi_334_;
+                                    let _e480 = phi_353_;
                                     let _e481 = local_28;
                                     let _e482 = local_26;
-                                    phi_336_ = _e480;
-                                    phi_337_ = select(0u, _e482, _e481);
+                                    phi_355_ = _e480;
+                                    phi_356_ = select(0u, _e482, _e481);
                                 } else {
-                                    phi_336_ = 0u;
-                                    phi_337_ = 0u;
+                                    phi_355_ = 0u;
+                                    phi_356_ = 0u;
                                 }
-                                let _e485 = phi_336_;
-                                let _e487 = phi_337_;
-                                phi_338_ = _e485;
-                                phi_339_ = _e487;
+                                let _e485 = phi_355_;
+                                let _e487 = phi_356_;
+                                phi_357_ = _e485;
+                                phi_358_ = _e487;
                             } else {
-                                phi_338_ = 0u;
-                                phi_339_ = 0u;
+                                phi_357_ = 0u;
+                                phi_358_ = 0u;
                             }
-                            let _e489 = phi_338_;
-                            let _e491 = phi_339_;
-                            phi_340_ = _e489;
-                            phi_341_ = _e491;
+                            let _e489 = phi_357_;
+                            let _e491 = phi_358_;
+                            phi_359_ = _e489;
+                            phi_360_ = _e491;
                         } else {
-                            phi_340_ = 0u;
-                            phi_341_ = 0u;
+                            phi_359_ = 0u;
+                            phi_360_ = 0u;
                         }
-                        let _e493 = phi_340_;
-                        let _e495 = phi_341_;
-                        phi_342_ = _e493;
-                        phi_343_ = _e495;
+                        let _e493 = phi_359_;
+                        let _e495 = phi_360_;
+                        phi_361_ = _e493;
+                        phi_362_ = _e495;
                     } else {
-                        phi_342_ = 0u;
-                        phi_343_ = 0u;
+                        phi_361_ = 0u;
+                        phi_362_ = 0u;
                     }
-                    let _e497 = phi_342_;
-                    let _e499 = phi_343_;
-                    phi_344_ = _e497;
-                    phi_345_ = _e499;
+                    let _e497 = phi_361_;
+                    let _e499 = phi_362_;
+                    phi_363_ = _e497;
+                    phi_364_ = _e499;
                 }
-                let _e501 = phi_344_;
-                let _e503 = phi_345_;
-                phi_346_ = _e501;
-                phi_347_ = _e503;
+                let _e501 = phi_363_;
+                let _e503 = phi_364_;
+                phi_365_ = _e501;
+                phi_366_ = _e503;
             } else {
-                phi_346_ = 0u;
-                phi_347_ = 0u;
+                phi_365_ = 0u;
+                phi_366_ = 0u;
             }
-            let _e505 = phi_346_;
-            let _e507 = phi_347_;
+            let _e505 = phi_365_;
+            let _e507 = phi_366_;
             local_29 = _e505;
             local_30 = _e507;
             let _e508 = local;
@@ -730,11 +730,11 @@ fn function_() {
             global_11[_e517] = _e519;
             storageBarrier();
             workgroupBarrier();
-            phi_363_ = 1u;
-            phi_366_ = 768u;
+            phi_520_ = 1u;
+            phi_523_ = 768u;
             loop {
-                let _e521 = phi_363_;
-                let _e523 = phi_366_;
+                let _e521 = phi_520_;
+                let _e523 = phi_523_;
                 local_33 = _e521;
                 local_34 = _e523;
                 let _e524 = local_33;
@@ -750,7 +750,7 @@ fn function_() {
                     local_36 = _e531;
                     if (_e531 < 1792u) {
                     } else {
-                        phi_2033_ = true;
+                        phi_2621_ = true;
                         break;
                     }
                     let _e533 = local_36;
@@ -766,17 +766,17 @@ fn function_() {
                         local_38 = _e543;
                         if (_e543 < 1792u) {
                         } else {
-                            phi_2033_ = true;
+                            phi_2621_ = true;
                             break;
                         }
                         let _e545 = local_38;
                         let _e547 = global_11[_e545];
                         let _e548 = local_37;
-                        phi_402_ = (_e547 + _e548);
+                        phi_559_ = (_e547 + _e548);
                     } else {
-                        phi_402_ = _e535;
+                        phi_559_ = _e535;
                     }
-                    let _e551 = phi_402_;
+                    let _e551 = phi_559_;
                     local_39 = _e551;
                     let _e552 = local_228;
                     let _e553 = local;
@@ -784,7 +784,7 @@ fn function_() {
                     local_40 = _e554;
                     if (_e554 < 1792u) {
                     } else {
-                        phi_2033_ = true;
+                        phi_2621_ = true;
                         break;
                     }
                     let _e556 = local_40;
@@ -793,24 +793,24 @@ fn function_() {
                     storageBarrier();
                     workgroupBarrier();
                     let _e559 = local_33;
-                    phi_364_ = (_e559 * 2u);
-                    phi_367_ = _e528;
+                    phi_521_ = (_e559 * 2u);
+                    phi_524_ = _e528;
                 } else {
-                    phi_364_ = u32();
-                    phi_367_ = u32();
+                    phi_521_ = u32();
+                    phi_524_ = u32();
                 }
-                let _e562 = phi_364_;
-                let _e564 = phi_367_;
+                let _e562 = phi_521_;
+                let _e564 = phi_524_;
                 continue;
                 continuing {
                     let _e565 = local_35;
-                    phi_363_ = _e562;
-                    phi_366_ = _e564;
-                    phi_2033_ = false;
+                    phi_520_ = _e562;
+                    phi_523_ = _e564;
+                    phi_2621_ = false;
                     break if !(_e565);
                 }
             }
-            let _e568 = phi_2033_;
+            let _e568 = phi_2621_;
             if _e568 {
                 break;
             }
@@ -832,25 +832,25 @@ fn function_() {
             let _e586 = local_34;
             local_230 = select(768u, 1024u, (_e586 == 768u));
             let _e589 = local;
-            phi_2059_ = _e568;
-            phi_445_ = 0u;
-            phi_448_ = 0u;
-            phi_450_ = 0u;
-            phi_452_ = 0u;
-            phi_454_ = 0u;
-            phi_456_ = (_e589 * _e579);
-            phi_458_ = 0u;
-            phi_460_ = 0u;
+            phi_2665_ = _e568;
+            phi_603_ = 0u;
+            phi_606_ = 0u;
+            phi_608_ = 0u;
+            phi_610_ = 0u;
+            phi_612_ = 0u;
+            phi_614_ = (_e589 * _e579);
+            phi_616_ = 0u;
+            phi_618_ = 0u;
             loop {
-                let _e592 = phi_2059_;
-                let _e594 = phi_445_;
-                let _e596 = phi_448_;
-                let _e598 = phi_450_;
-                let _e600 = phi_452_;
-                let _e602 = phi_454_;
-                let _e604 = phi_456_;
-                let _e606 = phi_458_;
-                let _e608 = phi_460_;
+                let _e592 = phi_2665_;
+                let _e594 = phi_603_;
+                let _e596 = phi_606_;
+                let _e598 = phi_608_;
+                let _e600 = phi_610_;
+                let _e602 = phi_612_;
+                let _e604 = phi_614_;
+                let _e606 = phi_616_;
+                let _e608 = phi_618_;
                 local_45 = _e594;
                 local_46 = _e596;
                 local_47 = _e598;
@@ -864,11 +864,11 @@ fn function_() {
                 let _e611 = (_e609 < _e610);
                 local_53 = _e611;
                 if _e611 {
-                    phi_469_ = 255u;
-                    phi_472_ = 0u;
+                    phi_627_ = 255u;
+                    phi_630_ = 0u;
                     loop {
-                        let _e613 = phi_469_;
-                        let _e615 = phi_472_;
+                        let _e613 = phi_627_;
+                        let _e615 = phi_630_;
                         local_54 = _e613;
                         local_55 = _e615;
                         let _e616 = local_55;
@@ -885,7 +885,7 @@ fn function_() {
                             local_58 = _e624;
                             if (_e624 < 1792u) {
                             } else {
-                                phi_2055_ = true;
+                                phi_2661_ = true;
                                 break;
                             }
                             let _e626 = local_58;
@@ -894,59 +894,59 @@ fn function_() {
                             let _e630 = (_e628 > _e629);
                             local_59 = _e630;
                             if _e630 {
-                                phi_496_ = _e615;
+                                phi_654_ = _e615;
                             } else {
                                 let _e631 = local_57;
-                                phi_496_ = (_e631 + 1u);
+                                phi_654_ = (_e631 + 1u);
                             }
-                            let _e634 = phi_496_;
+                            let _e634 = phi_654_;
                             let _e635 = local_59;
                             let _e636 = local_57;
                             let _e637 = local_54;
-                            phi_470_ = select(_e637, _e636, _e635);
-                            phi_473_ = _e634;
+                            phi_628_ = select(_e637, _e636, _e635);
+                            phi_631_ = _e634;
                         } else {
-                            phi_470_ = u32();
-                            phi_473_ = u32();
+                            phi_628_ = u32();
+                            phi_631_ = u32();
                         }
-                        let _e640 = phi_470_;
-                        let _e642 = phi_473_;
+                        let _e640 = phi_628_;
+                        let _e642 = phi_631_;
                         continue;
                         continuing {
                             let _e643 = local_56;
-                            phi_469_ = _e640;
-                            phi_472_ = _e642;
-                            phi_2055_ = _e592;
+                            phi_627_ = _e640;
+                            phi_630_ = _e642;
+                            phi_2661_ = _e592;
                             break if !(_e643);
                         }
                     }
-                    let _e646 = phi_2055_;
-                    phi_2151_ = _e646;
+                    let _e646 = phi_2661_;
+                    phi_2758_ = _e646;
                     if _e646 {
                         break;
                     }
                     let _e647 = local_55;
                     let _e648 = local_9;
                     let _e649 = local_10;
-                    phi_2066_ = _e646;
-                    phi_499_ = 0u;
-                    phi_502_ = _e594;
-                    phi_504_ = _e596;
-                    phi_506_ = _e598;
-                    phi_508_ = _e600;
-                    phi_510_ = _e602;
-                    phi_512_ = type_24(_e647, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e648, _e649, false);
-                    phi_514_ = 0u;
+                    phi_2673_ = _e646;
+                    phi_657_ = 0u;
+                    phi_660_ = _e594;
+                    phi_662_ = _e596;
+                    phi_664_ = _e598;
+                    phi_666_ = _e600;
+                    phi_668_ = _e602;
+                    phi_670_ = type_24(_e647, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e648, _e649, false);
+                    phi_672_ = 0u;
                     loop {
-                        let _e652 = phi_2066_;
-                        let _e654 = phi_499_;
-                        let _e656 = phi_502_;
-                        let _e658 = phi_504_;
-                        let _e660 = phi_506_;
-                        let _e662 = phi_508_;
-                        let _e664 = phi_510_;
-                        let _e666 = phi_512_;
-                        let _e668 = phi_514_;
+                        let _e652 = phi_2673_;
+                        let _e654 = phi_657_;
+                        let _e656 = phi_660_;
+                        let _e658 = phi_662_;
+                        let _e660 = phi_664_;
+                        let _e662 = phi_666_;
+                        let _e664 = phi_668_;
+                        let _e666 = phi_670_;
+                        let _e668 = phi_672_;
                         local_60 = _e654;
                         local_61 = _e656;
                         local_62 = _e658;
@@ -969,9 +969,9 @@ fn function_() {
                             let _e675 = local_42;
                             let _e676 = (_e674 < _e675);
                             if _e676 {
-                                phi_529_ = _e666;
+                                phi_687_ = _e666;
                                 loop {
-                                    let _e678 = phi_529_;
+                                    let _e678 = phi_687_;
                                     local_68 = _e678;
                                     local_235 = _e678;
                                     let _e679 = local_68;
@@ -983,7 +983,7 @@ fn function_() {
                                         local_70 = _e684;
                                         if (_e684 < 1792u) {
                                         } else {
-                                            phi_2062_ = true;
+                                            phi_2669_ = true;
                                             break;
                                         }
                                         let _e686 = local_70;
@@ -993,36 +993,36 @@ fn function_() {
                                         if _e690 {
                                             let _e691 = local_69;
                                             let _e693 = local_68;
-                                            phi_555_ = type_24((_e691 + 1u), _e693.member_1, _e693.member_2, _e693.member_3, _e693.member_4, _e693.member_5, _e693.member_6, _e693.member_7, _e693.member_8, _e693.member_9, _e693.member_10, _e693.member_11, _e693.member_12, _e693.member_13, _e693.member_14);
+                                            phi_713_ = type_24((_e691 + 1u), _e693.member_1, _e693.member_2, _e693.member_3, _e693.member_4, _e693.member_5, _e693.member_6, _e693.member_7, _e693.member_8, _e693.member_9, _e693.member_10, _e693.member_11, _e693.member_12, _e693.member_13, _e693.member_14);
                                         } else {
-                                            phi_555_ = type_24();
+                                            phi_713_ = type_24();
                                         }
-                                        let _e711 = phi_555_;
-                                        phi_530_ = _e711;
-                                        phi_556_ = _e690;
+                                        let _e711 = phi_713_;
+                                        phi_688_ = _e711;
+                                        phi_714_ = _e690;
                                     } else {
-                                        phi_530_ = type_24();
-                                        phi_556_ = false;
+                                        phi_688_ = type_24();
+                                        phi_714_ = false;
                                     }
-                                    let _e713 = phi_530_;
-                                    let _e715 = phi_556_;
+                                    let _e713 = phi_688_;
+                                    let _e715 = phi_714_;
                                     local_71 = _e715;
                                     continue;
                                     continuing {
                                         let _e716 = local_71;
-                                        phi_529_ = _e713;
-                                        phi_2062_ = _e652;
+                                        phi_687_ = _e713;
+                                        phi_2669_ = _e652;
                                         break if !(_e716);
                                     }
                                 }
-                                let _e719 = phi_2062_;
-                                phi_2111_ = _e719;
+                                let _e719 = phi_2669_;
+                                phi_2718_ = _e719;
                                 if _e719 {
                                     break;
                                 }
                                 let _e720 = local_69;
                                 if (_e720 == 0u) {
-                                    phi_576_ = 0u;
+                                    phi_734_ = 0u;
                                 } else {
                                     let _e722 = local_34;
                                     let _e723 = local_69;
@@ -1030,14 +1030,14 @@ fn function_() {
                                     local_72 = _e725;
                                     if (_e725 < 1792u) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e727 = local_72;
                                     let _e729 = global_11[_e727];
-                                    phi_576_ = _e729;
+                                    phi_734_ = _e729;
                                 }
-                                let _e731 = phi_576_;
+                                let _e731 = phi_734_;
                                 let _e732 = local_67;
                                 local_73 = (_e732 - _e731);
                                 let _e734 = local_68;
@@ -1048,7 +1048,7 @@ fn function_() {
                                     let _e740 = local_11;
                                     local_75 = _e740.member_3;
                                     if (_e740.member_3 == 0u) {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e743 = local_74;
@@ -1059,7 +1059,7 @@ fn function_() {
                                     local_77 = _e747;
                                     if (_e747 < 1792u) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e749 = local_77;
@@ -1069,7 +1069,7 @@ fn function_() {
                                     let _e753 = (_e752 == 0u);
                                     local_79 = _e753;
                                     if _e753 {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e754 = local_78;
@@ -1078,7 +1078,7 @@ fn function_() {
                                     local_80 = ((_e754 % _e755) * _e757);
                                     let _e759 = local_79;
                                     if _e759 {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e760 = local_78;
@@ -1115,11 +1115,11 @@ fn function_() {
                                     let _e882 = select(_e881, _e878, (_e878 < _e879));
                                     local_232 = _e882;
                                     local_85 = type_24(_e875.member, _e875.member_1, _e875.member_2, _e875.member_3, _e875.member_4, _e875.member_5, _e875.member_6, _e882, _e875.member_8, _e875.member_9, _e875.member_10, _e875.member_11, _e875.member_12, _e875.member_13, _e875.member_14);
-                                    phi_645_ = (_e882 - 1u);
-                                    phi_648_ = 0u;
+                                    phi_803_ = (_e882 - 1u);
+                                    phi_806_ = 0u;
                                     loop {
-                                        let _e901 = phi_645_;
-                                        let _e903 = phi_648_;
+                                        let _e901 = phi_803_;
+                                        let _e903 = phi_806_;
                                         local_86 = _e901;
                                         local_87 = _e903;
                                         let _e904 = local_87;
@@ -1134,11 +1134,11 @@ fn function_() {
                                             local_89 = _e910;
                                             if ((_e909 % 2u) > 0u) {
                                                 let _e913 = local_89;
-                                                phi_672_ = (_e913 + 1u);
+                                                phi_830_ = (_e913 + 1u);
                                             } else {
-                                                phi_672_ = _e910;
+                                                phi_830_ = _e910;
                                             }
-                                            let _e916 = phi_672_;
+                                            let _e916 = phi_830_;
                                             local_90 = _e916;
                                             let _e917 = local_232;
                                             if (_e916 < _e917) {
@@ -1150,57 +1150,57 @@ fn function_() {
                                                 let _e924 = local_3;
                                                 if (_e923 < _e924) {
                                                 } else {
-                                                    phi_2067_ = true;
+                                                    phi_2674_ = true;
                                                     break;
                                                 }
                                                 let _e926 = local_91;
                                                 let _e929 = global_6.member[_e926];
-                                                phi_688_ = _e929;
+                                                phi_846_ = _e929;
                                             } else {
-                                                phi_688_ = 4294967295u;
+                                                phi_846_ = 4294967295u;
                                             }
-                                            let _e931 = phi_688_;
+                                            let _e931 = phi_846_;
                                             let _e932 = local_73;
                                             let _e933 = (_e931 <= _e932);
                                             local_92 = _e933;
                                             if _e933 {
-                                                phi_694_ = _e901;
+                                                phi_852_ = _e901;
                                             } else {
                                                 let _e934 = local_90;
-                                                phi_694_ = (_e934 - 1u);
+                                                phi_852_ = (_e934 - 1u);
                                             }
-                                            let _e937 = phi_694_;
+                                            let _e937 = phi_852_;
                                             let _e938 = local_92;
                                             let _e939 = local_90;
                                             let _e940 = local_87;
-                                            phi_646_ = _e937;
-                                            phi_649_ = select(_e940, _e939, _e938);
+                                            phi_804_ = _e937;
+                                            phi_807_ = select(_e940, _e939, _e938);
                                         } else {
-                                            phi_646_ = u32();
-                                            phi_649_ = u32();
+                                            phi_804_ = u32();
+                                            phi_807_ = u32();
                                         }
-                                        let _e943 = phi_646_;
-                                        let _e945 = phi_649_;
+                                        let _e943 = phi_804_;
+                                        let _e945 = phi_807_;
                                         continue;
                                         continuing {
                                             let _e946 = local_88;
-                                            phi_645_ = _e943;
-                                            phi_648_ = _e945;
-                                            phi_2067_ = _e719;
+                                            phi_803_ = _e943;
+                                            phi_806_ = _e945;
+                                            phi_2674_ = _e719;
                                             break if !(_e946);
                                         }
                                     }
-                                    let _e949 = phi_2067_;
-                                    phi_2111_ = _e949;
+                                    let _e949 = phi_2674_;
+                                    phi_2718_ = _e949;
                                     if _e949 {
                                         break;
                                     }
                                     let _e950 = local_231;
-                                    phi_698_ = (_e950 - 1u);
-                                    phi_701_ = 0u;
+                                    phi_856_ = (_e950 - 1u);
+                                    phi_859_ = 0u;
                                     loop {
-                                        let _e953 = phi_698_;
-                                        let _e955 = phi_701_;
+                                        let _e953 = phi_856_;
+                                        let _e955 = phi_859_;
                                         local_93 = _e953;
                                         local_94 = _e955;
                                         let _e956 = local_94;
@@ -1215,11 +1215,11 @@ fn function_() {
                                             local_96 = _e962;
                                             if ((_e961 % 2u) > 0u) {
                                                 let _e965 = local_96;
-                                                phi_725_ = (_e965 + 1u);
+                                                phi_883_ = (_e965 + 1u);
                                             } else {
-                                                phi_725_ = _e962;
+                                                phi_883_ = _e962;
                                             }
-                                            let _e968 = phi_725_;
+                                            let _e968 = phi_883_;
                                             local_97 = _e968;
                                             let _e969 = local_87;
                                             let _e970 = local_232;
@@ -1233,48 +1233,48 @@ fn function_() {
                                                 let _e979 = local_3;
                                                 if (_e978 < _e979) {
                                                 } else {
-                                                    phi_2076_ = true;
+                                                    phi_2683_ = true;
                                                     break;
                                                 }
                                                 let _e981 = local_98;
                                                 let _e984 = global_6.member[_e981];
-                                                phi_741_ = _e984;
+                                                phi_899_ = _e984;
                                             } else {
-                                                phi_741_ = 4294967295u;
+                                                phi_899_ = 4294967295u;
                                             }
-                                            let _e986 = phi_741_;
+                                            let _e986 = phi_899_;
                                             let _e987 = local_73;
                                             let _e988 = (_e986 <= _e987);
                                             local_99 = _e988;
                                             if _e988 {
-                                                phi_747_ = _e953;
+                                                phi_905_ = _e953;
                                             } else {
                                                 let _e989 = local_97;
-                                                phi_747_ = (_e989 - 1u);
+                                                phi_905_ = (_e989 - 1u);
                                             }
-                                            let _e992 = phi_747_;
+                                            let _e992 = phi_905_;
                                             let _e993 = local_99;
                                             let _e994 = local_97;
                                             let _e995 = local_94;
-                                            phi_699_ = _e992;
-                                            phi_702_ = select(_e995, _e994, _e993);
+                                            phi_857_ = _e992;
+                                            phi_860_ = select(_e995, _e994, _e993);
                                         } else {
-                                            phi_699_ = u32();
-                                            phi_702_ = u32();
+                                            phi_857_ = u32();
+                                            phi_860_ = u32();
                                         }
-                                        let _e998 = phi_699_;
-                                        let _e1000 = phi_702_;
+                                        let _e998 = phi_857_;
+                                        let _e1000 = phi_860_;
                                         continue;
                                         continuing {
                                             let _e1001 = local_95;
-                                            phi_698_ = _e998;
-                                            phi_701_ = _e1000;
-                                            phi_2076_ = _e949;
+                                            phi_856_ = _e998;
+                                            phi_859_ = _e1000;
+                                            phi_2683_ = _e949;
                                             break if !(_e1001);
                                         }
                                     }
-                                    let _e1004 = phi_2076_;
-                                    phi_2111_ = _e1004;
+                                    let _e1004 = phi_2683_;
+                                    phi_2718_ = _e1004;
                                     if _e1004 {
                                         break;
                                     }
@@ -1297,16 +1297,16 @@ fn function_() {
                                         let _e1050 = local_3;
                                         if (_e1049 < _e1050) {
                                         } else {
-                                            phi_2111_ = true;
+                                            phi_2718_ = true;
                                             break;
                                         }
                                         let _e1052 = local_102;
                                         let _e1055 = global_6.member[_e1052];
-                                        phi_766_ = _e1055;
+                                        phi_924_ = _e1055;
                                     } else {
-                                        phi_766_ = 4294967295u;
+                                        phi_924_ = 4294967295u;
                                     }
-                                    let _e1057 = phi_766_;
+                                    let _e1057 = phi_924_;
                                     let _e1058 = local_100;
                                     local_103 = type_24(_e1058.member, _e1058.member_1, _e1058.member_2, _e1058.member_3, _e1058.member_4, _e1058.member_5, _e1058.member_6, _e1058.member_7, _e1058.member_8, _e1058.member_9, _e1057, _e1058.member_11, _e1058.member_12, _e1058.member_13, _e1058.member_14);
                                     let _e1075 = local_94;
@@ -1325,17 +1325,17 @@ fn function_() {
                                             let _e1104 = local_3;
                                             if (_e1103 < _e1104) {
                                             } else {
-                                                phi_2111_ = true;
+                                                phi_2718_ = true;
                                                 break;
                                             }
                                             let _e1106 = local_105;
                                             let _e1109 = global_6.member[_e1106];
-                                            phi_789_ = _e1109;
+                                            phi_947_ = _e1109;
                                         } else {
-                                            phi_789_ = 4294967295u;
+                                            phi_947_ = 4294967295u;
                                         }
-                                        let _e1111 = phi_789_;
-                                        phi_807_ = _e1111;
+                                        let _e1111 = phi_947_;
+                                        phi_965_ = _e1111;
                                     } else {
                                         let _e1079 = local_87;
                                         let _e1080 = (_e1079 + 1u);
@@ -1350,19 +1350,19 @@ fn function_() {
                                             let _e1088 = local_3;
                                             if (_e1087 < _e1088) {
                                             } else {
-                                                phi_2111_ = true;
+                                                phi_2718_ = true;
                                                 break;
                                             }
                                             let _e1090 = local_107;
                                             let _e1093 = global_6.member[_e1090];
-                                            phi_806_ = _e1093;
+                                            phi_964_ = _e1093;
                                         } else {
-                                            phi_806_ = 4294967295u;
+                                            phi_964_ = 4294967295u;
                                         }
-                                        let _e1095 = phi_806_;
-                                        phi_807_ = _e1095;
+                                        let _e1095 = phi_964_;
+                                        phi_965_ = _e1095;
                                     }
-                                    let _e1113 = phi_807_;
+                                    let _e1113 = phi_965_;
                                     let _e1114 = local_103;
                                     local_108 = type_24(_e1114.member, _e1114.member_1, _e1114.member_2, _e1114.member_3, _e1114.member_4, _e1114.member_5, _e1114.member_6, _e1114.member_7, _e1114.member_8, _e1114.member_9, _e1114.member_10, _e1113, _e1114.member_12, _e1114.member_13, _e1114.member_14);
                                     let _e1131 = local_82;
@@ -1376,7 +1376,7 @@ fn function_() {
                                     let _e1142 = local_3;
                                     if (_e1141 < _e1142) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e1144 = local_109;
@@ -1413,18 +1413,18 @@ fn function_() {
                                     let _e1212 = select(_e1210, _e1209, (_e1209 > _e1210));
                                     let _e1214 = select(0f, _e1212, (_e1212 > 0f));
                                     let _e1220 = local_108;
-                                    phi_2097_ = _e1004;
-                                    phi_919_ = type_24(_e1220.member, _e1220.member_1, _e1220.member_2, _e1220.member_3, _e1220.member_4, _e1220.member_5, _e1220.member_6, _e1220.member_7, _e1220.member_8, _e1220.member_9, _e1220.member_10, _e1220.member_11, _e1220.member_12, _e1220.member_13, (((_e1206 * _e1206) + (_e1214 * _e1214)) <= (_e1148 * _e1148)));
+                                    phi_2704_ = _e1004;
+                                    phi_1077_ = type_24(_e1220.member, _e1220.member_1, _e1220.member_2, _e1220.member_3, _e1220.member_4, _e1220.member_5, _e1220.member_6, _e1220.member_7, _e1220.member_8, _e1220.member_9, _e1220.member_10, _e1220.member_11, _e1220.member_12, _e1220.member_13, (((_e1206 * _e1206) + (_e1214 * _e1214)) <= (_e1148 * _e1148)));
                                 } else {
-                                    phi_2097_ = _e719;
+                                    phi_2704_ = _e719;
                                     let _e2438 = local_235;
-                                    phi_919_ = _e2438;
+                                    phi_1077_ = _e2438;
                                 }
-                                let _e1238 = phi_2097_;
-                                let _e1240 = phi_919_;
-                                phi_921_ = _e1240;
+                                let _e1238 = phi_2704_;
+                                let _e1240 = phi_1077_;
+                                phi_1079_ = _e1240;
                                 loop {
-                                    let _e1242 = phi_921_;
+                                    let _e1242 = phi_1079_;
                                     local_110 = _e1242;
                                     local_236 = _e1242;
                                     let _e1243 = local_110;
@@ -1442,12 +1442,12 @@ fn function_() {
                                         local_115 = _e1252;
                                         if _e1252 {
                                             let _e1256 = local_110;
-                                            phi_943_ = _e1256.member_9;
+                                            phi_1101_ = _e1256.member_9;
                                         } else {
                                             let _e1253 = local_110;
-                                            phi_943_ = (_e1253.member_9 + 1u);
+                                            phi_1101_ = (_e1253.member_9 + 1u);
                                         }
-                                        let _e1259 = phi_943_;
+                                        let _e1259 = phi_1101_;
                                         local_116 = _e1259;
                                         let _e1260 = local_115;
                                         let _e1261 = local_113;
@@ -1470,16 +1470,16 @@ fn function_() {
                                             let _e1308 = local_3;
                                             if (_e1307 < _e1308) {
                                             } else {
-                                                phi_2082_ = true;
+                                                phi_2689_ = true;
                                                 break;
                                             }
                                             let _e1310 = local_120;
                                             let _e1313 = global_6.member[_e1310];
-                                            phi_964_ = _e1313;
+                                            phi_1122_ = _e1313;
                                         } else {
-                                            phi_964_ = 4294967295u;
+                                            phi_1122_ = 4294967295u;
                                         }
-                                        let _e1315 = phi_964_;
+                                        let _e1315 = phi_1122_;
                                         let _e1316 = local_117;
                                         local_121 = type_24(_e1316.member, _e1316.member_1, _e1316.member_2, _e1316.member_3, _e1316.member_4, _e1316.member_5, _e1316.member_6, _e1316.member_7, _e1316.member_8, _e1316.member_9, _e1315, _e1316.member_11, _e1316.member_12, _e1316.member_13, _e1316.member_14);
                                         let _e1333 = local_233;
@@ -1498,17 +1498,17 @@ fn function_() {
                                                 let _e1366 = local_3;
                                                 if (_e1365 < _e1366) {
                                                 } else {
-                                                    phi_2082_ = true;
+                                                    phi_2689_ = true;
                                                     break;
                                                 }
                                                 let _e1368 = local_123;
                                                 let _e1371 = global_6.member[_e1368];
-                                                phi_990_ = _e1371;
+                                                phi_1148_ = _e1371;
                                             } else {
-                                                phi_990_ = 4294967295u;
+                                                phi_1148_ = 4294967295u;
                                             }
-                                            let _e1373 = phi_990_;
-                                            phi_1010_ = _e1373;
+                                            let _e1373 = phi_1148_;
+                                            phi_1168_ = _e1373;
                                         } else {
                                             let _e1337 = local_116;
                                             let _e1338 = (_e1337 + 1u);
@@ -1523,19 +1523,19 @@ fn function_() {
                                                 let _e1348 = local_3;
                                                 if (_e1347 < _e1348) {
                                                 } else {
-                                                    phi_2082_ = true;
+                                                    phi_2689_ = true;
                                                     break;
                                                 }
                                                 let _e1350 = local_125;
                                                 let _e1353 = global_6.member[_e1350];
-                                                phi_1009_ = _e1353;
+                                                phi_1167_ = _e1353;
                                             } else {
-                                                phi_1009_ = 4294967295u;
+                                                phi_1167_ = 4294967295u;
                                             }
-                                            let _e1355 = phi_1009_;
-                                            phi_1010_ = _e1355;
+                                            let _e1355 = phi_1167_;
+                                            phi_1168_ = _e1355;
                                         }
-                                        let _e1375 = phi_1010_;
+                                        let _e1375 = phi_1168_;
                                         let _e1376 = local_121;
                                         local_126 = type_24(_e1376.member, _e1376.member_1, _e1376.member_2, _e1376.member_3, _e1376.member_4, _e1376.member_5, _e1376.member_6, _e1376.member_7, _e1376.member_8, _e1376.member_9, _e1376.member_10, _e1375, _e1376.member_12, _e1376.member_13, _e1376.member_14);
                                         let _e1393 = local_11;
@@ -1548,7 +1548,7 @@ fn function_() {
                                         let _e1406 = local_3;
                                         if (_e1405 < _e1406) {
                                         } else {
-                                            phi_2082_ = true;
+                                            phi_2689_ = true;
                                             break;
                                         }
                                         let _e1408 = local_127;
@@ -1579,21 +1579,21 @@ fn function_() {
                                         let _e1474 = select(_e1472, _e1471, (_e1471 > _e1472));
                                         let _e1476 = select(0f, _e1474, (_e1474 > 0f));
                                         let _e1482 = local_126;
-                                        phi_922_ = type_24(_e1482.member, _e1482.member_1, _e1482.member_2, _e1482.member_3, _e1482.member_4, _e1482.member_5, _e1482.member_6, _e1482.member_7, _e1482.member_8, _e1482.member_9, _e1482.member_10, _e1482.member_11, _e1482.member_12, _e1482.member_13, (((_e1468 * _e1468) + (_e1476 * _e1476)) <= (_e1412 * _e1412)));
+                                        phi_1080_ = type_24(_e1482.member, _e1482.member_1, _e1482.member_2, _e1482.member_3, _e1482.member_4, _e1482.member_5, _e1482.member_6, _e1482.member_7, _e1482.member_8, _e1482.member_9, _e1482.member_10, _e1482.member_11, _e1482.member_12, _e1482.member_13, (((_e1468 * _e1468) + (_e1476 * _e1476)) <= (_e1412 * _e1412)));
                                     } else {
-                                        phi_922_ = type_24();
+                                        phi_1080_ = type_24();
                                     }
-                                    let _e1500 = phi_922_;
+                                    let _e1500 = phi_1080_;
                                     continue;
                                     continuing {
                                         let _e1501 = local_112;
-                                        phi_921_ = _e1500;
-                                        phi_2082_ = _e1238;
+                                        phi_1079_ = _e1500;
+                                        phi_2689_ = _e1238;
                                         break if !(_e1501);
                                     }
                                 }
-                                let _e1504 = phi_2082_;
-                                phi_2111_ = _e1504;
+                                let _e1504 = phi_2689_;
+                                phi_2718_ = _e1504;
                                 if _e1504 {
                                     break;
                                 }
@@ -1608,7 +1608,7 @@ fn function_() {
                                 let _e1513 = local_11;
                                 local_132 = _e1513.member_3;
                                 if (_e1513.member_3 == 0u) {
-                                    phi_2111_ = true;
+                                    phi_2718_ = true;
                                     break;
                                 }
                                 let _e1516 = local_131;
@@ -1632,7 +1632,7 @@ fn function_() {
                                     let _e1573 = local_1;
                                     if (_e1572 < _e1573) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e1575 = local_135;
@@ -1644,7 +1644,7 @@ fn function_() {
                                     let _e1581 = local_1;
                                     if (_e1580 < _e1581) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e1583 = local_137;
@@ -1656,7 +1656,7 @@ fn function_() {
                                     let _e1589 = local_1;
                                     if (_e1588 < _e1589) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e1591 = local_139;
@@ -1668,7 +1668,7 @@ fn function_() {
                                     let _e1597 = local_1;
                                     if (_e1596 < _e1597) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e1599 = local_141;
@@ -1684,27 +1684,27 @@ fn function_() {
                                     let _e1613 = (_e1611 >> bitcast<u32>(24i));
                                     local_146 = _e1613;
                                     if (_e1613 == 0u) {
-                                        phi_1207_ = array<f32, 3>(0f, 0f, 0f);
+                                        phi_1365_ = array<f32, 3>(0f, 0f, 0f);
                                     } else {
                                         let _e1615 = local_146;
                                         let _e1621 = bitcast<f32>((bitcast<u32>((bitcast<i32>(_e1615) + -13i)) << bitcast<u32>(23i)));
                                         let _e1622 = local_143;
                                         let _e1625 = local_144;
                                         let _e1628 = local_145;
-                                        phi_1207_ = array<f32, 3>((f32(_e1622) * _e1621), (f32(_e1625) * _e1621), (f32(_e1628) * _e1621));
+                                        phi_1365_ = array<f32, 3>((f32(_e1622) * _e1621), (f32(_e1625) * _e1621), (f32(_e1628) * _e1621));
                                     }
-                                    let _e1633 = phi_1207_;
+                                    let _e1633 = phi_1365_;
                                     local_147 = _e1633;
                                     let _e1634 = local_138;
                                     let _e1637 = ((_e1634 >> bitcast<u32>(14u)) & 1023u);
                                     local_148 = _e1637;
                                     if (_e1637 >= 1023u) {
-                                        phi_1218_ = 1f;
+                                        phi_1376_ = 1f;
                                     } else {
                                         let _e1639 = local_148;
-                                        phi_1218_ = (f32(_e1639) * 0.0009775171f);
+                                        phi_1376_ = (f32(_e1639) * 0.0009775171f);
                                     }
-                                    let _e1643 = phi_1218_;
+                                    let _e1643 = phi_1376_;
                                     local_149 = _e1643;
                                     let _e1644 = local_140;
                                     let _e1645 = bitcast<f32>(_e1644);
@@ -1721,34 +1721,34 @@ fn function_() {
                                     let _e1661 = ((_e1658 >> bitcast<u32>(8u)) & 7u);
                                     local_153 = _e1661;
                                     if (_e1661 == 0u) {
-                                        phi_1290_ = type_21(_e1655, _e1656, _e1643, _e1645, _e1649, 0u);
+                                        phi_1448_ = type_21(_e1655, _e1656, _e1643, _e1645, _e1649, 0u);
                                     } else {
                                         let _e1663 = local_153;
                                         let _e1664 = local_153;
                                         let _e1665 = (_e1663 * _e1664);
                                         local_154 = _e1665;
                                         if (_e1665 <= 1u) {
-                                            phi_1243_ = 1u;
+                                            phi_1401_ = 1u;
                                         } else {
                                             let _e1667 = local_154;
-                                            phi_1243_ = select(16u, 4u, (_e1667 <= 4u));
+                                            phi_1401_ = select(16u, 4u, (_e1667 <= 4u));
                                         }
-                                        let _e1671 = phi_1243_;
+                                        let _e1671 = phi_1401_;
                                         local_155 = _e1671;
                                         if (_e1671 == 0u) {
-                                            phi_2111_ = true;
+                                            phi_2718_ = true;
                                             break;
                                         }
                                         let _e1673 = local_155;
                                         local_156 = (32u / _e1673);
                                         let _e1675 = local_155;
                                         if (_e1675 >= 32u) {
-                                            phi_1256_ = 4294967295u;
+                                            phi_1414_ = 4294967295u;
                                         } else {
                                             let _e1677 = local_155;
-                                            phi_1256_ = ((1u << bitcast<u32>((_e1677 & 31u))) - 1u);
+                                            phi_1414_ = ((1u << bitcast<u32>((_e1677 & 31u))) - 1u);
                                         }
-                                        let _e1683 = phi_1256_;
+                                        let _e1683 = phi_1414_;
                                         local_157 = _e1683;
                                         let _e1684 = local_11;
                                         let _e1686 = local_14;
@@ -1760,7 +1760,7 @@ fn function_() {
                                         let _e1696 = (_e1695 == 0u);
                                         local_159 = _e1696;
                                         if _e1696 {
-                                            phi_2111_ = true;
+                                            phi_2718_ = true;
                                             break;
                                         }
                                         let _e1697 = local_134;
@@ -1769,7 +1769,7 @@ fn function_() {
                                         local_160 = (_e1700 + (_e1697 / _e1698));
                                         let _e1702 = local_159;
                                         if _e1702 {
-                                            phi_2111_ = true;
+                                            phi_2718_ = true;
                                             break;
                                         }
                                         let _e1703 = local_134;
@@ -1780,7 +1780,7 @@ fn function_() {
                                         let _e1709 = local_1;
                                         if (_e1708 < _e1709) {
                                         } else {
-                                            phi_2111_ = true;
+                                            phi_2718_ = true;
                                             break;
                                         }
                                         let _e1711 = local_160;
@@ -1792,17 +1792,17 @@ fn function_() {
                                         let _e1723 = local_149;
                                         let _e1724 = local_150;
                                         let _e1725 = local_151;
-                                        phi_1290_ = type_21(_e1721, _e1722, _e1723, _e1724, _e1725, ((_e1714 >> bitcast<u32>((_e1715 & 31u))) & _e1719));
+                                        phi_1448_ = type_21(_e1721, _e1722, _e1723, _e1724, _e1725, ((_e1714 >> bitcast<u32>((_e1715 & 31u))) & _e1719));
                                     }
-                                    let _e1728 = phi_1290_;
+                                    let _e1728 = phi_1448_;
                                     local_162 = _e1728;
                                     if (_e1728.member_5 != 0u) {
-                                        phi_1301_ = 1.4142135f;
+                                        phi_1459_ = 1.4142135f;
                                     } else {
                                         let _e1731 = local_162;
-                                        phi_1301_ = (0.5f * f32((1u << bitcast<u32>((_e1731.member_4 & 31u)))));
+                                        phi_1459_ = (0.5f * f32((1u << bitcast<u32>((_e1731.member_4 & 31u)))));
                                     }
-                                    let _e1739 = phi_1301_;
+                                    let _e1739 = phi_1459_;
                                     local_163 = _e1739;
                                     let _e1740 = local_162;
                                     local_164 = _e1740.member_3;
@@ -1813,16 +1813,16 @@ fn function_() {
                                         let _e1788 = local_11;
                                         let _e1792 = local_11;
                                         let _e1797 = local_11;
-                                        phi_1356_ = (0.5f * ((((2f * _e1784.member_15.member_1) * _e1788.member_15.member) / (_e1792.member_15.member_2 - _e1788.member_15.member)) * _e1797.member_15.member_3));
+                                        phi_1514_ = (0.5f * ((((2f * _e1784.member_15.member_1) * _e1788.member_15.member) / (_e1792.member_15.member_2 - _e1788.member_15.member)) * _e1797.member_15.member_3));
                                     } else {
                                         let _e1744 = local_165;
                                         if (_e1744 == 0u) {
-                                            phi_1325_ = false;
+                                            phi_1483_ = false;
                                         } else {
                                             let _e1746 = local_165;
-                                            phi_1325_ = (_e1746 <= 2139095040u);
+                                            phi_1483_ = (_e1746 <= 2139095040u);
                                         }
-                                        let _e1749 = phi_1325_;
+                                        let _e1749 = phi_1483_;
                                         if _e1749 {
                                             let _e1750 = local_11;
                                             let _e1754 = local_11;
@@ -1832,30 +1832,30 @@ fn function_() {
                                             let _e1766 = ((((2f * _e1750.member_15.member_1) * _e1754.member_15.member) / (_e1758.member_15.member_2 - _e1754.member_15.member)) * _e1763.member_15.member_3);
                                             local_167 = _e1766;
                                             if (_e1766 == 0f) {
-                                                phi_1347_ = 0f;
+                                                phi_1505_ = 0f;
                                             } else {
                                                 let _e1768 = local_166;
                                                 let _e1769 = local_164;
                                                 let _e1772 = local_167;
-                                                phi_1347_ = (_e1772 * (1f - (_e1768 / _e1769)));
+                                                phi_1505_ = (_e1772 * (1f - (_e1768 / _e1769)));
                                             }
-                                            let _e1775 = phi_1347_;
-                                            phi_1348_ = _e1775;
+                                            let _e1775 = phi_1505_;
+                                            phi_1506_ = _e1775;
                                         } else {
-                                            phi_1348_ = bitcast<f32>(_e296);
+                                            phi_1506_ = bitcast<f32>(_e296);
                                         }
-                                        let _e1777 = phi_1348_;
+                                        let _e1777 = phi_1506_;
                                         local_168 = _e1777;
                                         if (_e1777 < 0f) {
                                             let _e1779 = local_168;
-                                            phi_1354_ = -(_e1779);
+                                            phi_1512_ = -(_e1779);
                                         } else {
-                                            phi_1354_ = _e1777;
+                                            phi_1512_ = _e1777;
                                         }
-                                        let _e1782 = phi_1354_;
-                                        phi_1356_ = (0.5f * _e1782);
+                                        let _e1782 = phi_1512_;
+                                        phi_1514_ = (0.5f * _e1782);
                                     }
-                                    let _e1803 = phi_1356_;
+                                    let _e1803 = phi_1514_;
                                     let _e1808 = local_163;
                                     let _e1809 = (select(_e1803, 0f, ((bitcast<u32>(_e1803) & 2147483647u) > 2139095040u)) + _e1808);
                                     let _e1810 = local_13;
@@ -1896,9 +1896,9 @@ fn function_() {
                                         let _e1885 = local_60;
                                         let _e1887 = local_65;
                                         local_169 = ((_e1873.member_4 + _e1875) | (_e1877.member_5 + _e1879));
-                                        phi_1457_ = 0u;
+                                        phi_1615_ = 0u;
                                         loop {
-                                            let _e1891 = phi_1457_;
+                                            let _e1891 = phi_1615_;
                                             local_170 = _e1891;
                                             let _e1892 = local_170;
                                             if (_e1892 < 1u) {
@@ -1907,28 +1907,28 @@ fn function_() {
                                                 let _e1897 = local_132;
                                                 let _e1902 = local_234;
                                                 let _e1903 = (_e1902 >= f32((2u * (_e1897 << bitcast<u32>((_e1895 & 31u))))));
-                                                phi_1458_ = select(u32(), _e1895, _e1903);
-                                                phi_1478_ = _e1903;
+                                                phi_1616_ = select(u32(), _e1895, _e1903);
+                                                phi_1636_ = _e1903;
                                             } else {
-                                                phi_1458_ = u32();
-                                                phi_1478_ = false;
+                                                phi_1616_ = u32();
+                                                phi_1636_ = false;
                                             }
-                                            let _e1906 = phi_1458_;
-                                            let _e1908 = phi_1478_;
+                                            let _e1906 = phi_1616_;
+                                            let _e1908 = phi_1636_;
                                             local_171 = _e1908;
                                             continue;
                                             continuing {
                                                 let _e1909 = local_171;
-                                                phi_1457_ = _e1906;
+                                                phi_1615_ = _e1906;
                                                 break if !(_e1909);
                                             }
                                         }
                                         let _e1911 = local_170;
                                         let _e1916 = local_169;
                                         let _e1920 = local_64;
-                                        phi_1492_ = 0u;
+                                        phi_1650_ = 0u;
                                         loop {
-                                            let _e1923 = phi_1492_;
+                                            let _e1923 = phi_1650_;
                                             local_172 = _e1923;
                                             let _e1924 = local_172;
                                             if (_e1924 < 2u) {
@@ -1937,28 +1937,28 @@ fn function_() {
                                                 let _e1929 = local_132;
                                                 let _e1934 = local_234;
                                                 let _e1935 = (_e1934 >= f32((2u * (_e1929 << bitcast<u32>((_e1927 & 31u))))));
-                                                phi_1493_ = select(u32(), _e1927, _e1935);
-                                                phi_1513_ = _e1935;
+                                                phi_1651_ = select(u32(), _e1927, _e1935);
+                                                phi_1671_ = _e1935;
                                             } else {
-                                                phi_1493_ = u32();
-                                                phi_1513_ = false;
+                                                phi_1651_ = u32();
+                                                phi_1671_ = false;
                                             }
-                                            let _e1938 = phi_1493_;
-                                            let _e1940 = phi_1513_;
+                                            let _e1938 = phi_1651_;
+                                            let _e1940 = phi_1671_;
                                             local_173 = _e1940;
                                             continue;
                                             continuing {
                                                 let _e1941 = local_173;
-                                                phi_1492_ = _e1938;
+                                                phi_1650_ = _e1938;
                                                 break if !(_e1941);
                                             }
                                         }
                                         let _e1943 = local_172;
                                         let _e1948 = local_169;
                                         let _e1952 = local_63;
-                                        phi_1527_ = 0u;
+                                        phi_1685_ = 0u;
                                         loop {
-                                            let _e1955 = phi_1527_;
+                                            let _e1955 = phi_1685_;
                                             local_174 = _e1955;
                                             let _e1956 = local_174;
                                             if (_e1956 < 3u) {
@@ -1967,28 +1967,28 @@ fn function_() {
                                                 let _e1961 = local_132;
                                                 let _e1966 = local_234;
                                                 let _e1967 = (_e1966 >= f32((2u * (_e1961 << bitcast<u32>((_e1959 & 31u))))));
-                                                phi_1528_ = select(u32(), _e1959, _e1967);
-                                                phi_1548_ = _e1967;
+                                                phi_1686_ = select(u32(), _e1959, _e1967);
+                                                phi_1706_ = _e1967;
                                             } else {
-                                                phi_1528_ = u32();
-                                                phi_1548_ = false;
+                                                phi_1686_ = u32();
+                                                phi_1706_ = false;
                                             }
-                                            let _e1970 = phi_1528_;
-                                            let _e1972 = phi_1548_;
+                                            let _e1970 = phi_1686_;
+                                            let _e1972 = phi_1706_;
                                             local_175 = _e1972;
                                             continue;
                                             continuing {
                                                 let _e1973 = local_175;
-                                                phi_1527_ = _e1970;
+                                                phi_1685_ = _e1970;
                                                 break if !(_e1973);
                                             }
                                         }
                                         let _e1975 = local_174;
                                         let _e1980 = local_169;
                                         let _e1984 = local_62;
-                                        phi_1562_ = 0u;
+                                        phi_1720_ = 0u;
                                         loop {
-                                            let _e1987 = phi_1562_;
+                                            let _e1987 = phi_1720_;
                                             local_176 = _e1987;
                                             let _e1988 = local_176;
                                             if (_e1988 < 4u) {
@@ -1997,58 +1997,58 @@ fn function_() {
                                                 let _e1993 = local_132;
                                                 let _e1998 = local_234;
                                                 let _e1999 = (_e1998 >= f32((2u * (_e1993 << bitcast<u32>((_e1991 & 31u))))));
-                                                phi_1563_ = select(u32(), _e1991, _e1999);
-                                                phi_1583_ = _e1999;
+                                                phi_1721_ = select(u32(), _e1991, _e1999);
+                                                phi_1741_ = _e1999;
                                             } else {
-                                                phi_1563_ = u32();
-                                                phi_1583_ = false;
+                                                phi_1721_ = u32();
+                                                phi_1741_ = false;
                                             }
-                                            let _e2002 = phi_1563_;
-                                            let _e2004 = phi_1583_;
+                                            let _e2002 = phi_1721_;
+                                            let _e2004 = phi_1741_;
                                             local_177 = _e2004;
                                             continue;
                                             continuing {
                                                 let _e2005 = local_177;
-                                                phi_1562_ = _e2002;
+                                                phi_1720_ = _e2002;
                                                 break if !(_e2005);
                                             }
                                         }
                                         let _e2007 = local_176;
                                         let _e2012 = local_169;
                                         let _e2016 = local_61;
-                                        phi_1595_ = (_e1885 | (1u << bitcast<u32>((_e1881 & 31u))));
-                                        phi_1596_ = (_e2016 + select(0u, 1u, ((_e2012 & ((1u << bitcast<u32>((_e2007 & 31u))) - 1u)) == 0u)));
-                                        phi_1597_ = (_e1984 + select(0u, 1u, ((_e1980 & ((1u << bitcast<u32>((_e1975 & 31u))) - 1u)) == 0u)));
-                                        phi_1598_ = (_e1952 + select(0u, 1u, ((_e1948 & ((1u << bitcast<u32>((_e1943 & 31u))) - 1u)) == 0u)));
-                                        phi_1599_ = (_e1920 + select(0u, 1u, ((_e1916 & ((1u << bitcast<u32>((_e1911 & 31u))) - 1u)) == 0u)));
-                                        phi_1600_ = (_e1887 + 1u);
+                                        phi_1753_ = (_e1885 | (1u << bitcast<u32>((_e1881 & 31u))));
+                                        phi_1754_ = (_e2016 + select(0u, 1u, ((_e2012 & ((1u << bitcast<u32>((_e2007 & 31u))) - 1u)) == 0u)));
+                                        phi_1755_ = (_e1984 + select(0u, 1u, ((_e1980 & ((1u << bitcast<u32>((_e1975 & 31u))) - 1u)) == 0u)));
+                                        phi_1756_ = (_e1952 + select(0u, 1u, ((_e1948 & ((1u << bitcast<u32>((_e1943 & 31u))) - 1u)) == 0u)));
+                                        phi_1757_ = (_e1920 + select(0u, 1u, ((_e1916 & ((1u << bitcast<u32>((_e1911 & 31u))) - 1u)) == 0u)));
+                                        phi_1758_ = (_e1887 + 1u);
                                     } else {
-                                        phi_1595_ = _e654;
-                                        phi_1596_ = _e656;
-                                        phi_1597_ = _e658;
-                                        phi_1598_ = _e660;
-                                        phi_1599_ = _e662;
-                                        phi_1600_ = _e664;
+                                        phi_1753_ = _e654;
+                                        phi_1754_ = _e656;
+                                        phi_1755_ = _e658;
+                                        phi_1756_ = _e660;
+                                        phi_1757_ = _e662;
+                                        phi_1758_ = _e664;
                                     }
-                                    let _e2019 = phi_1595_;
-                                    let _e2021 = phi_1596_;
-                                    let _e2023 = phi_1597_;
-                                    let _e2025 = phi_1598_;
-                                    let _e2027 = phi_1599_;
-                                    let _e2029 = phi_1600_;
+                                    let _e2019 = phi_1753_;
+                                    let _e2021 = phi_1754_;
+                                    let _e2023 = phi_1755_;
+                                    let _e2025 = phi_1756_;
+                                    let _e2027 = phi_1757_;
+                                    let _e2029 = phi_1758_;
                                     let _e2030 = local_66;
-                                    phi_1637_ = _e2019;
-                                    phi_1638_ = _e2021;
-                                    phi_1639_ = _e2023;
-                                    phi_1640_ = _e2025;
-                                    phi_1641_ = _e2027;
-                                    phi_1642_ = _e2029;
-                                    phi_1643_ = (_e2030 + 1u);
+                                    phi_1795_ = _e2019;
+                                    phi_1796_ = _e2021;
+                                    phi_1797_ = _e2023;
+                                    phi_1798_ = _e2025;
+                                    phi_1799_ = _e2027;
+                                    phi_1800_ = _e2029;
+                                    phi_1801_ = (_e2030 + 1u);
                                 } else {
                                     let _e1540 = local_110;
                                     local_178 = _e1540.member;
                                     if (_e1540.member == 0u) {
-                                        phi_1617_ = 0u;
+                                        phi_1775_ = 0u;
                                     } else {
                                         let _e1543 = local_34;
                                         let _e1544 = local_178;
@@ -2056,14 +2056,14 @@ fn function_() {
                                         local_179 = _e1546;
                                         if (_e1546 < 1792u) {
                                         } else {
-                                            phi_2111_ = true;
+                                            phi_2718_ = true;
                                             break;
                                         }
                                         let _e1548 = local_179;
                                         let _e1550 = global_11[_e1548];
-                                        phi_1617_ = _e1550;
+                                        phi_1775_ = _e1550;
                                     }
-                                    let _e1552 = phi_1617_;
+                                    let _e1552 = phi_1775_;
                                     local_180 = _e1552;
                                     let _e1553 = local_34;
                                     let _e1554 = local_178;
@@ -2071,7 +2071,7 @@ fn function_() {
                                     local_181 = _e1555;
                                     if (_e1555 < 1792u) {
                                     } else {
-                                        phi_2111_ = true;
+                                        phi_2718_ = true;
                                         break;
                                     }
                                     let _e1557 = local_181;
@@ -2081,108 +2081,108 @@ fn function_() {
                                     if (_e1562 < (_e1559 - _e1560)) {
                                         let _e1564 = local_180;
                                         let _e1565 = local_111;
-                                        phi_1635_ = (_e1564 + _e1565);
+                                        phi_1793_ = (_e1564 + _e1565);
                                     } else {
-                                        phi_1635_ = _e1559;
+                                        phi_1793_ = _e1559;
                                     }
-                                    let _e1568 = phi_1635_;
+                                    let _e1568 = phi_1793_;
                                     let _e1569 = local_50;
-                                    phi_1637_ = _e654;
-                                    phi_1638_ = _e656;
-                                    phi_1639_ = _e658;
-                                    phi_1640_ = _e660;
-                                    phi_1641_ = _e662;
-                                    phi_1642_ = _e664;
-                                    phi_1643_ = (_e1568 - _e1569);
+                                    phi_1795_ = _e654;
+                                    phi_1796_ = _e656;
+                                    phi_1797_ = _e658;
+                                    phi_1798_ = _e660;
+                                    phi_1799_ = _e662;
+                                    phi_1800_ = _e664;
+                                    phi_1801_ = (_e1568 - _e1569);
                                 }
-                                let _e2033 = phi_1637_;
-                                let _e2035 = phi_1638_;
-                                let _e2037 = phi_1639_;
-                                let _e2039 = phi_1640_;
-                                let _e2041 = phi_1641_;
-                                let _e2043 = phi_1642_;
-                                let _e2045 = phi_1643_;
-                                phi_2113_ = _e1504;
-                                phi_1644_ = _e2033;
-                                phi_1645_ = _e2035;
-                                phi_1646_ = _e2037;
-                                phi_1647_ = _e2039;
-                                phi_1648_ = _e2041;
-                                phi_1649_ = _e2043;
+                                let _e2033 = phi_1795_;
+                                let _e2035 = phi_1796_;
+                                let _e2037 = phi_1797_;
+                                let _e2039 = phi_1798_;
+                                let _e2041 = phi_1799_;
+                                let _e2043 = phi_1800_;
+                                let _e2045 = phi_1801_;
+                                phi_2720_ = _e1504;
+                                phi_1802_ = _e2033;
+                                phi_1803_ = _e2035;
+                                phi_1804_ = _e2037;
+                                phi_1805_ = _e2039;
+                                phi_1806_ = _e2041;
+                                phi_1807_ = _e2043;
                                 let _e2494 = local_236;
-                                phi_1650_ = _e2494;
-                                phi_1651_ = _e2045;
+                                phi_1808_ = _e2494;
+                                phi_1809_ = _e2045;
                             } else {
-                                phi_2113_ = _e652;
-                                phi_1644_ = u32();
-                                phi_1645_ = u32();
-                                phi_1646_ = u32();
-                                phi_1647_ = u32();
-                                phi_1648_ = u32();
-                                phi_1649_ = u32();
-                                phi_1650_ = type_24();
-                                phi_1651_ = u32();
+                                phi_2720_ = _e652;
+                                phi_1802_ = u32();
+                                phi_1803_ = u32();
+                                phi_1804_ = u32();
+                                phi_1805_ = u32();
+                                phi_1806_ = u32();
+                                phi_1807_ = u32();
+                                phi_1808_ = type_24();
+                                phi_1809_ = u32();
                             }
-                            let _e2047 = phi_2113_;
-                            let _e2049 = phi_1644_;
-                            let _e2051 = phi_1645_;
-                            let _e2053 = phi_1646_;
-                            let _e2055 = phi_1647_;
-                            let _e2057 = phi_1648_;
-                            let _e2059 = phi_1649_;
-                            let _e2061 = phi_1650_;
-                            let _e2063 = phi_1651_;
-                            phi_2112_ = _e2047;
-                            phi_500_ = _e2049;
-                            phi_503_ = _e2051;
-                            phi_505_ = _e2053;
-                            phi_507_ = _e2055;
-                            phi_509_ = _e2057;
-                            phi_511_ = _e2059;
-                            phi_513_ = _e2061;
-                            phi_515_ = _e2063;
-                            phi_1652_ = _e676;
+                            let _e2047 = phi_2720_;
+                            let _e2049 = phi_1802_;
+                            let _e2051 = phi_1803_;
+                            let _e2053 = phi_1804_;
+                            let _e2055 = phi_1805_;
+                            let _e2057 = phi_1806_;
+                            let _e2059 = phi_1807_;
+                            let _e2061 = phi_1808_;
+                            let _e2063 = phi_1809_;
+                            phi_2719_ = _e2047;
+                            phi_658_ = _e2049;
+                            phi_661_ = _e2051;
+                            phi_663_ = _e2053;
+                            phi_665_ = _e2055;
+                            phi_667_ = _e2057;
+                            phi_669_ = _e2059;
+                            phi_671_ = _e2061;
+                            phi_673_ = _e2063;
+                            phi_1810_ = _e676;
                         } else {
-                            phi_2112_ = _e652;
-                            phi_500_ = u32();
-                            phi_503_ = u32();
-                            phi_505_ = u32();
-                            phi_507_ = u32();
-                            phi_509_ = u32();
-                            phi_511_ = u32();
-                            phi_513_ = type_24();
-                            phi_515_ = u32();
-                            phi_1652_ = false;
+                            phi_2719_ = _e652;
+                            phi_658_ = u32();
+                            phi_661_ = u32();
+                            phi_663_ = u32();
+                            phi_665_ = u32();
+                            phi_667_ = u32();
+                            phi_669_ = u32();
+                            phi_671_ = type_24();
+                            phi_673_ = u32();
+                            phi_1810_ = false;
                         }
-                        let _e2065 = phi_2112_;
-                        let _e2067 = phi_500_;
-                        let _e2069 = phi_503_;
-                        let _e2071 = phi_505_;
-                        let _e2073 = phi_507_;
-                        let _e2075 = phi_509_;
-                        let _e2077 = phi_511_;
-                        let _e2079 = phi_513_;
-                        let _e2081 = phi_515_;
-                        let _e2083 = phi_1652_;
+                        let _e2065 = phi_2719_;
+                        let _e2067 = phi_658_;
+                        let _e2069 = phi_661_;
+                        let _e2071 = phi_663_;
+                        let _e2073 = phi_665_;
+                        let _e2075 = phi_667_;
+                        let _e2077 = phi_669_;
+                        let _e2079 = phi_671_;
+                        let _e2081 = phi_673_;
+                        let _e2083 = phi_1810_;
                         local_182 = _e2083;
                         continue;
                         continuing {
                             let _e2084 = local_182;
-                            phi_2066_ = _e2065;
-                            phi_499_ = _e2067;
-                            phi_502_ = _e2069;
-                            phi_504_ = _e2071;
-                            phi_506_ = _e2073;
-                            phi_508_ = _e2075;
-                            phi_510_ = _e2077;
-                            phi_512_ = _e2079;
-                            phi_514_ = _e2081;
-                            phi_2111_ = _e2065;
+                            phi_2673_ = _e2065;
+                            phi_657_ = _e2067;
+                            phi_660_ = _e2069;
+                            phi_662_ = _e2071;
+                            phi_664_ = _e2073;
+                            phi_666_ = _e2075;
+                            phi_668_ = _e2077;
+                            phi_670_ = _e2079;
+                            phi_672_ = _e2081;
+                            phi_2718_ = _e2065;
                             break if !(_e2084);
                         }
                     }
-                    let _e2087 = phi_2111_;
-                    phi_2151_ = _e2087;
+                    let _e2087 = phi_2718_;
+                    phi_2758_ = _e2087;
                     if _e2087 {
                         break;
                     }
@@ -2193,65 +2193,65 @@ fn function_() {
                         let _e2092 = local_229;
                         let _e2095 = local_60;
                         let _e2098 = local_52;
-                        phi_1665_ = (_e2098 | (_e2095 << bitcast<u32>(((_e2091 * _e2092) & 31u))));
+                        phi_1823_ = (_e2098 | (_e2095 << bitcast<u32>(((_e2091 * _e2092) & 31u))));
                     } else {
-                        phi_1665_ = _e608;
+                        phi_1823_ = _e608;
                     }
-                    let _e2101 = phi_1665_;
+                    let _e2101 = phi_1823_;
                     let _e2102 = local_229;
                     let _e2104 = local_50;
                     let _e2106 = local_51;
-                    phi_2152_ = _e2087;
+                    phi_2759_ = _e2087;
                     let _e2511 = local_237;
-                    phi_446_ = _e2511;
+                    phi_604_ = _e2511;
                     let _e2514 = local_238;
-                    phi_449_ = _e2514;
+                    phi_607_ = _e2514;
                     let _e2517 = local_239;
-                    phi_451_ = _e2517;
+                    phi_609_ = _e2517;
                     let _e2520 = local_240;
-                    phi_453_ = _e2520;
+                    phi_611_ = _e2520;
                     let _e2523 = local_241;
-                    phi_455_ = _e2523;
-                    phi_457_ = (_e2104 + (256u * _e2102));
-                    phi_459_ = (_e2106 + 1u);
-                    phi_461_ = _e2101;
+                    phi_613_ = _e2523;
+                    phi_615_ = (_e2104 + (256u * _e2102));
+                    phi_617_ = (_e2106 + 1u);
+                    phi_619_ = _e2101;
                 } else {
-                    phi_2152_ = _e592;
-                    phi_446_ = u32();
-                    phi_449_ = u32();
-                    phi_451_ = u32();
-                    phi_453_ = u32();
-                    phi_455_ = u32();
-                    phi_457_ = u32();
-                    phi_459_ = u32();
-                    phi_461_ = u32();
+                    phi_2759_ = _e592;
+                    phi_604_ = u32();
+                    phi_607_ = u32();
+                    phi_609_ = u32();
+                    phi_611_ = u32();
+                    phi_613_ = u32();
+                    phi_615_ = u32();
+                    phi_617_ = u32();
+                    phi_619_ = u32();
                 }
-                let _e2109 = phi_2152_;
-                let _e2111 = phi_446_;
-                let _e2113 = phi_449_;
-                let _e2115 = phi_451_;
-                let _e2117 = phi_453_;
-                let _e2119 = phi_455_;
-                let _e2121 = phi_457_;
-                let _e2123 = phi_459_;
-                let _e2125 = phi_461_;
+                let _e2109 = phi_2759_;
+                let _e2111 = phi_604_;
+                let _e2113 = phi_607_;
+                let _e2115 = phi_609_;
+                let _e2117 = phi_611_;
+                let _e2119 = phi_613_;
+                let _e2121 = phi_615_;
+                let _e2123 = phi_617_;
+                let _e2125 = phi_619_;
                 continue;
                 continuing {
                     let _e2126 = local_53;
-                    phi_2059_ = _e2109;
-                    phi_445_ = _e2111;
-                    phi_448_ = _e2113;
-                    phi_450_ = _e2115;
-                    phi_452_ = _e2117;
-                    phi_454_ = _e2119;
-                    phi_456_ = _e2121;
-                    phi_458_ = _e2123;
-                    phi_460_ = _e2125;
-                    phi_2151_ = _e2109;
+                    phi_2665_ = _e2109;
+                    phi_603_ = _e2111;
+                    phi_606_ = _e2113;
+                    phi_608_ = _e2115;
+                    phi_610_ = _e2117;
+                    phi_612_ = _e2119;
+                    phi_614_ = _e2121;
+                    phi_616_ = _e2123;
+                    phi_618_ = _e2125;
+                    phi_2758_ = _e2109;
                     break if !(_e2126);
                 }
             }
-            let _e2129 = phi_2151_;
+            let _e2129 = phi_2758_;
             if _e2129 {
                 break;
             }
@@ -2328,9 +2328,9 @@ fn function_() {
             global_11[_e2167] = _e2169;
             storageBarrier();
             workgroupBarrier();
-            phi_1714_ = 128u;
+            phi_1958_ = 128u;
             loop {
-                let _e2171 = phi_1714_;
+                let _e2171 = phi_1958_;
                 local_193 = _e2171;
                 let _e2172 = local_193;
                 let _e2173 = (_e2172 > 0u);
@@ -2342,7 +2342,7 @@ fn function_() {
                         let _e2177 = local_184;
                         if _e2177 {
                         } else {
-                            phi_2154_ = true;
+                            phi_2761_ = true;
                             break;
                         }
                         let _e2178 = global_11[_e2142];
@@ -2353,234 +2353,234 @@ fn function_() {
                         local_196 = _e2181;
                         if (_e2181 < 1792u) {
                         } else {
-                            phi_2154_ = true;
+                            phi_2761_ = true;
                             break;
                         }
                         let _e2183 = local_196;
                         let _e2185 = global_11[_e2183];
                         let _e2186 = local_195;
-                        local_223 = (_e2186 + _e2185);
+                        local_197 = (_e2186 + _e2185);
                         let _e2188 = local_184;
                         if _e2188 {
                         } else {
-                            phi_2154_ = true;
+                            phi_2761_ = true;
                             break;
                         }
-                        let _e2189 = local_223;
+                        let _e2189 = local_197;
                         global_11[_e2142] = _e2189;
                     }
                     storageBarrier();
                     workgroupBarrier();
                     let _e2190 = local_193;
-                    phi_1715_ = (_e2190 / 2u);
+                    phi_1959_ = (_e2190 / 2u);
                 } else {
-                    phi_1715_ = u32();
+                    phi_1959_ = u32();
                 }
-                let _e2193 = phi_1715_;
+                let _e2193 = phi_1959_;
                 continue;
                 continuing {
                     let _e2194 = local_194;
-                    phi_1714_ = _e2193;
-                    phi_2154_ = _e2129;
+                    phi_1958_ = _e2193;
+                    phi_2761_ = _e2129;
                     break if !(_e2194);
                 }
             }
-            let _e2197 = phi_2154_;
+            let _e2197 = phi_2761_;
             if _e2197 {
                 break;
             }
             let _e2199 = global_11[0u];
-            local_197 = _e2199;
+            local_198 = _e2199;
             storageBarrier();
             workgroupBarrier();
-            phi_1760_ = 128u;
+            phi_2091_ = 128u;
             loop {
-                let _e2201 = phi_1760_;
-                local_198 = _e2201;
-                let _e2202 = local_198;
+                let _e2201 = phi_2091_;
+                local_199 = _e2201;
+                let _e2202 = local_199;
                 let _e2203 = (_e2202 > 0u);
-                local_199 = _e2203;
+                local_200 = _e2203;
                 if _e2203 {
                     let _e2204 = local;
-                    let _e2205 = local_198;
+                    let _e2205 = local_199;
                     if (_e2204 < _e2205) {
                         let _e2207 = local_186;
                         if _e2207 {
                         } else {
-                            phi_2158_ = true;
+                            phi_2783_ = true;
                             break;
                         }
                         let _e2208 = global_11[_e2148];
-                        local_200 = _e2208;
+                        local_201 = _e2208;
                         let _e2209 = local_185;
-                        let _e2210 = local_198;
+                        let _e2210 = local_199;
                         let _e2211 = (_e2209 + _e2210);
-                        local_201 = _e2211;
+                        local_202 = _e2211;
                         if (_e2211 < 1792u) {
                         } else {
-                            phi_2158_ = true;
+                            phi_2783_ = true;
                             break;
                         }
-                        let _e2213 = local_201;
+                        let _e2213 = local_202;
                         let _e2215 = global_11[_e2213];
-                        let _e2216 = local_200;
-                        local_224 = (_e2216 + _e2215);
+                        let _e2216 = local_201;
+                        local_203 = (_e2216 + _e2215);
                         let _e2218 = local_186;
                         if _e2218 {
                         } else {
-                            phi_2158_ = true;
+                            phi_2783_ = true;
                             break;
                         }
-                        let _e2219 = local_224;
+                        let _e2219 = local_203;
                         global_11[_e2148] = _e2219;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e2220 = local_198;
-                    phi_1761_ = (_e2220 / 2u);
+                    let _e2220 = local_199;
+                    phi_2092_ = (_e2220 / 2u);
                 } else {
-                    phi_1761_ = u32();
+                    phi_2092_ = u32();
                 }
-                let _e2223 = phi_1761_;
+                let _e2223 = phi_2092_;
                 continue;
                 continuing {
-                    let _e2224 = local_199;
-                    phi_1760_ = _e2223;
-                    phi_2158_ = _e2197;
+                    let _e2224 = local_200;
+                    phi_2091_ = _e2223;
+                    phi_2783_ = _e2197;
                     break if !(_e2224);
                 }
             }
-            let _e2227 = phi_2158_;
+            let _e2227 = phi_2783_;
             if _e2227 {
                 break;
             }
             let _e2229 = global_11[256u];
-            local_202 = _e2229;
+            local_204 = _e2229;
             storageBarrier();
             workgroupBarrier();
-            phi_1806_ = 128u;
+            phi_2224_ = 128u;
             loop {
-                let _e2231 = phi_1806_;
-                local_203 = _e2231;
-                let _e2232 = local_203;
+                let _e2231 = phi_2224_;
+                local_205 = _e2231;
+                let _e2232 = local_205;
                 let _e2233 = (_e2232 > 0u);
-                local_204 = _e2233;
+                local_206 = _e2233;
                 if _e2233 {
                     let _e2234 = local;
-                    let _e2235 = local_203;
+                    let _e2235 = local_205;
                     if (_e2234 < _e2235) {
                         let _e2237 = local_188;
                         if _e2237 {
                         } else {
-                            phi_2162_ = true;
+                            phi_2807_ = true;
                             break;
                         }
                         let _e2238 = global_11[_e2154];
-                        local_205 = _e2238;
+                        local_207 = _e2238;
                         let _e2239 = local_187;
-                        let _e2240 = local_203;
+                        let _e2240 = local_205;
                         let _e2241 = (_e2239 + _e2240);
-                        local_206 = _e2241;
+                        local_208 = _e2241;
                         if (_e2241 < 1792u) {
                         } else {
-                            phi_2162_ = true;
+                            phi_2807_ = true;
                             break;
                         }
-                        let _e2243 = local_206;
+                        let _e2243 = local_208;
                         let _e2245 = global_11[_e2243];
-                        let _e2246 = local_205;
-                        local_225 = (_e2246 + _e2245);
+                        let _e2246 = local_207;
+                        local_209 = (_e2246 + _e2245);
                         let _e2248 = local_188;
                         if _e2248 {
                         } else {
-                            phi_2162_ = true;
+                            phi_2807_ = true;
                             break;
                         }
-                        let _e2249 = local_225;
+                        let _e2249 = local_209;
                         global_11[_e2154] = _e2249;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e2250 = local_203;
-                    phi_1807_ = (_e2250 / 2u);
+                    let _e2250 = local_205;
+                    phi_2225_ = (_e2250 / 2u);
                 } else {
-                    phi_1807_ = u32();
+                    phi_2225_ = u32();
                 }
-                let _e2253 = phi_1807_;
+                let _e2253 = phi_2225_;
                 continue;
                 continuing {
-                    let _e2254 = local_204;
-                    phi_1806_ = _e2253;
-                    phi_2162_ = _e2227;
+                    let _e2254 = local_206;
+                    phi_2224_ = _e2253;
+                    phi_2807_ = _e2227;
                     break if !(_e2254);
                 }
             }
-            let _e2257 = phi_2162_;
+            let _e2257 = phi_2807_;
             if _e2257 {
                 break;
             }
             let _e2259 = global_11[512u];
-            local_207 = _e2259;
+            local_210 = _e2259;
             storageBarrier();
             workgroupBarrier();
-            phi_1852_ = 128u;
+            phi_2357_ = 128u;
             loop {
-                let _e2261 = phi_1852_;
-                local_208 = _e2261;
-                let _e2262 = local_208;
+                let _e2261 = phi_2357_;
+                local_211 = _e2261;
+                let _e2262 = local_211;
                 let _e2263 = (_e2262 > 0u);
-                local_209 = _e2263;
+                local_212 = _e2263;
                 if _e2263 {
                     let _e2264 = local;
-                    let _e2265 = local_208;
+                    let _e2265 = local_211;
                     if (_e2264 < _e2265) {
                         let _e2267 = local_190;
                         if _e2267 {
                         } else {
-                            phi_2166_ = true;
+                            phi_2831_ = true;
                             break;
                         }
                         let _e2268 = global_11[_e2161];
-                        local_210 = _e2268;
+                        local_213 = _e2268;
                         let _e2269 = local_189;
-                        let _e2270 = local_208;
+                        let _e2270 = local_211;
                         let _e2271 = (_e2269 + _e2270);
-                        local_211 = _e2271;
+                        local_214 = _e2271;
                         if (_e2271 < 1792u) {
                         } else {
-                            phi_2166_ = true;
+                            phi_2831_ = true;
                             break;
                         }
-                        let _e2273 = local_211;
+                        let _e2273 = local_214;
                         let _e2275 = global_11[_e2273];
-                        let _e2276 = local_210;
-                        local_226 = (_e2276 + _e2275);
+                        let _e2276 = local_213;
+                        local_215 = (_e2276 + _e2275);
                         let _e2278 = local_190;
                         if _e2278 {
                         } else {
-                            phi_2166_ = true;
+                            phi_2831_ = true;
                             break;
                         }
-                        let _e2279 = local_226;
+                        let _e2279 = local_215;
                         global_11[_e2161] = _e2279;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e2280 = local_208;
-                    phi_1853_ = (_e2280 / 2u);
+                    let _e2280 = local_211;
+                    phi_2358_ = (_e2280 / 2u);
                 } else {
-                    phi_1853_ = u32();
+                    phi_2358_ = u32();
                 }
-                let _e2283 = phi_1853_;
+                let _e2283 = phi_2358_;
                 continue;
                 continuing {
-                    let _e2284 = local_209;
-                    phi_1852_ = _e2283;
-                    phi_2166_ = _e2257;
+                    let _e2284 = local_212;
+                    phi_2357_ = _e2283;
+                    phi_2831_ = _e2257;
                     break if !(_e2284);
                 }
             }
-            let _e2287 = phi_2166_;
+            let _e2287 = phi_2831_;
             if _e2287 {
                 break;
             }
@@ -2591,130 +2591,130 @@ fn function_() {
             }
             let _e2290 = local_230;
             let _e2292 = global_11[_e2290];
-            local_212 = _e2292;
+            local_216 = _e2292;
             storageBarrier();
             workgroupBarrier();
-            phi_1898_ = 128u;
+            phi_2490_ = 128u;
             loop {
-                let _e2294 = phi_1898_;
-                local_213 = _e2294;
-                let _e2295 = local_213;
+                let _e2294 = phi_2490_;
+                local_217 = _e2294;
+                let _e2295 = local_217;
                 let _e2296 = (_e2295 > 0u);
-                local_214 = _e2296;
+                local_218 = _e2296;
                 if _e2296 {
                     let _e2297 = local;
-                    let _e2298 = local_213;
+                    let _e2298 = local_217;
                     if (_e2297 < _e2298) {
                         let _e2300 = local_192;
                         if _e2300 {
                         } else {
-                            phi_2170_ = true;
+                            phi_2855_ = true;
                             break;
                         }
                         let _e2301 = global_11[_e2167];
-                        local_215 = _e2301;
+                        local_219 = _e2301;
                         let _e2302 = local_191;
-                        let _e2303 = local_213;
+                        let _e2303 = local_217;
                         let _e2304 = (_e2302 + _e2303);
-                        local_216 = _e2304;
+                        local_220 = _e2304;
                         if (_e2304 < 1792u) {
                         } else {
-                            phi_2170_ = true;
+                            phi_2855_ = true;
                             break;
                         }
-                        let _e2306 = local_216;
+                        let _e2306 = local_220;
                         let _e2308 = global_11[_e2306];
-                        let _e2309 = local_215;
-                        local_227 = (_e2309 + _e2308);
+                        let _e2309 = local_219;
+                        local_221 = (_e2309 + _e2308);
                         let _e2311 = local_192;
                         if _e2311 {
                         } else {
-                            phi_2170_ = true;
+                            phi_2855_ = true;
                             break;
                         }
-                        let _e2312 = local_227;
+                        let _e2312 = local_221;
                         global_11[_e2167] = _e2312;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e2313 = local_213;
-                    phi_1899_ = (_e2313 / 2u);
+                    let _e2313 = local_217;
+                    phi_2491_ = (_e2313 / 2u);
                 } else {
-                    phi_1899_ = u32();
+                    phi_2491_ = u32();
                 }
-                let _e2316 = phi_1899_;
+                let _e2316 = phi_2491_;
                 continue;
                 continuing {
-                    let _e2317 = local_214;
-                    phi_1898_ = _e2316;
-                    phi_2170_ = _e2287;
+                    let _e2317 = local_218;
+                    phi_2490_ = _e2316;
+                    phi_2855_ = _e2287;
                     break if !(_e2317);
                 }
             }
-            let _e2320 = phi_2170_;
+            let _e2320 = phi_2855_;
             if _e2320 {
                 break;
             }
             let _e2322 = global_11[1536u];
-            local_217 = _e2322;
+            local_222 = _e2322;
             storageBarrier();
             workgroupBarrier();
             let _e2323 = local;
             if (_e2323 == 0u) {
                 let _e2325 = local_15;
                 let _e2326 = (_e2325 * 5u);
-                local_218 = _e2326;
+                local_223 = _e2326;
                 let _e2327 = local_6;
                 if (_e2326 < _e2327) {
                 } else {
                     break;
                 }
-                let _e2329 = local_218;
-                let _e2332 = local_197;
+                let _e2329 = local_223;
+                let _e2332 = local_198;
                 global_8.member[_e2329] = _e2332;
-                let _e2333 = local_218;
+                let _e2333 = local_223;
                 let _e2334 = (_e2333 + 1u);
-                local_219 = _e2334;
+                local_224 = _e2334;
                 let _e2335 = local_6;
                 if (_e2334 < _e2335) {
                 } else {
                     break;
                 }
-                let _e2337 = local_219;
-                let _e2340 = local_202;
+                let _e2337 = local_224;
+                let _e2340 = local_204;
                 global_8.member[_e2337] = _e2340;
-                let _e2341 = local_218;
+                let _e2341 = local_223;
                 let _e2342 = (_e2341 + 2u);
-                local_220 = _e2342;
+                local_225 = _e2342;
                 let _e2343 = local_6;
                 if (_e2342 < _e2343) {
                 } else {
                     break;
                 }
-                let _e2345 = local_220;
-                let _e2348 = local_207;
+                let _e2345 = local_225;
+                let _e2348 = local_210;
                 global_8.member[_e2345] = _e2348;
-                let _e2349 = local_218;
+                let _e2349 = local_223;
                 let _e2350 = (_e2349 + 3u);
-                local_221 = _e2350;
+                local_226 = _e2350;
                 let _e2351 = local_6;
                 if (_e2350 < _e2351) {
                 } else {
                     break;
                 }
-                let _e2353 = local_221;
-                let _e2356 = local_212;
+                let _e2353 = local_226;
+                let _e2356 = local_216;
                 global_8.member[_e2353] = _e2356;
-                let _e2357 = local_218;
+                let _e2357 = local_223;
                 let _e2358 = (_e2357 + 4u);
-                local_222 = _e2358;
+                local_227 = _e2358;
                 let _e2359 = local_6;
                 if (_e2358 < _e2359) {
                 } else {
                     break;
                 }
-                let _e2361 = local_222;
-                let _e2364 = local_217;
+                let _e2361 = local_227;
+                let _e2364 = local_222;
                 global_8.member[_e2361] = _e2364;
             }
             storageBarrier();

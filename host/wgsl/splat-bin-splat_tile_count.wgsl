@@ -178,55 +178,55 @@ fn function_() {
     var local_99: u32;
     var local_100: u32;
     var local_101: u32;
-    var phi_165_: u32;
-    var phi_182_: u32;
-    var phi_198_: u32;
-    var phi_770_: bool;
-    var phi_200_: u32;
-    var phi_253_: u32;
-    var phi_256_: f32;
-    var phi_258_: u32;
-    var phi_311_: u32;
-    var phi_313_: u32;
-    var phi_314_: bool;
-    var phi_319_: u32;
-    var phi_347_: f32;
-    var phi_348_: u32;
-    var phi_254_: u32;
-    var phi_257_: f32;
-    var phi_259_: u32;
-    var phi_764_: bool;
-    var phi_788_: bool;
-    var phi_351_: type_21;
-    var phi_787_: bool;
-    var phi_353_: type_21;
-    var phi_354_: bool;
-    var phi_359_: type_21;
-    var phi_392_: u32;
-    var phi_395_: bool;
-    var phi_455_: bool;
-    var phi_469_: u32;
-    var phi_490_: u32;
-    var phi_393_: u32;
-    var phi_396_: bool;
+    var phi_150_: u32;
+    var phi_167_: u32;
+    var phi_183_: u32;
+    var phi_749_: bool;
+    var phi_185_: u32;
+    var phi_238_: u32;
+    var phi_241_: f32;
+    var phi_243_: u32;
+    var phi_296_: u32;
+    var phi_298_: u32;
+    var phi_299_: bool;
+    var phi_304_: u32;
+    var phi_332_: f32;
+    var phi_333_: u32;
+    var phi_239_: u32;
+    var phi_242_: f32;
+    var phi_244_: u32;
+    var phi_743_: bool;
+    var phi_767_: bool;
+    var phi_336_: type_21;
+    var phi_766_: bool;
+    var phi_338_: type_21;
+    var phi_339_: bool;
+    var phi_344_: type_21;
+    var phi_377_: u32;
+    var phi_380_: bool;
+    var phi_440_: bool;
+    var phi_454_: u32;
+    var phi_479_: u32;
+    var phi_378_: u32;
+    var phi_381_: bool;
+    var phi_756_: bool;
+    var phi_496_: type_14;
+    var phi_559_: u32;
+    var phi_564_: u32;
+    var phi_617_: u32;
+    var phi_619_: u32;
+    var phi_620_: bool;
+    var phi_625_: u32;
+    var phi_674_: u32;
+    var phi_560_: u32;
+    var phi_565_: u32;
+    var phi_768_: bool;
+    var phi_693_: bool;
+    var phi_780_: bool;
+    var phi_779_: bool;
+    var phi_778_: bool;
+    var phi_186_: u32;
     var phi_777_: bool;
-    var phi_507_: type_14;
-    var phi_570_: u32;
-    var phi_575_: u32;
-    var phi_628_: u32;
-    var phi_630_: u32;
-    var phi_631_: bool;
-    var phi_636_: u32;
-    var phi_685_: u32;
-    var phi_571_: u32;
-    var phi_576_: u32;
-    var phi_789_: bool;
-    var phi_704_: bool;
-    var phi_801_: bool;
-    var phi_800_: bool;
-    var phi_799_: bool;
-    var phi_201_: u32;
-    var phi_798_: bool;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -278,16 +278,16 @@ fn function_() {
             }
             let _e188 = local_16;
             if (_e188 >= 256u) {
-                phi_165_ = 1u;
+                phi_150_ = 1u;
             } else {
                 let _e190 = local_16;
                 if (_e190 == 0u) {
                     break;
                 }
                 let _e192 = local_16;
-                phi_165_ = (256u / _e192);
+                phi_150_ = (256u / _e192);
             }
-            let _e195 = phi_165_;
+            let _e195 = phi_150_;
             local_17 = _e195;
             let _e196 = local_16;
             let _e197 = (_e196 / 256u);
@@ -295,11 +295,11 @@ fn function_() {
             let _e198 = local_16;
             if ((_e198 % 256u) > 0u) {
                 let _e201 = local_18;
-                phi_182_ = (_e201 + 1u);
+                phi_167_ = (_e201 + 1u);
             } else {
-                phi_182_ = _e197;
+                phi_167_ = _e197;
             }
-            let _e204 = phi_182_;
+            let _e204 = phi_167_;
             local_19 = _e204;
             let _e205 = local_17;
             let _e206 = (_e205 == 0u);
@@ -319,17 +319,17 @@ fn function_() {
             let _e212 = local_17;
             if ((_e211 % _e212) > 0u) {
                 let _e215 = local_21;
-                phi_198_ = (_e215 + 1u);
+                phi_183_ = (_e215 + 1u);
             } else {
-                phi_198_ = _e209;
+                phi_183_ = _e209;
             }
-            let _e218 = phi_198_;
+            let _e218 = phi_183_;
             local_22 = _e218;
-            phi_770_ = false;
-            phi_200_ = _e144.x;
+            phi_749_ = false;
+            phi_185_ = _e144.x;
             loop {
-                let _e220 = phi_770_;
-                let _e222 = phi_200_;
+                let _e220 = phi_749_;
+                let _e222 = phi_185_;
                 local_23 = _e222;
                 let _e223 = local_23;
                 let _e224 = local_22;
@@ -346,7 +346,7 @@ fn function_() {
                     let _e233 = (_e232 == 0u);
                     local_27 = _e233;
                     if _e233 {
-                        phi_798_ = true;
+                        phi_777_ = true;
                         break;
                     }
                     let _e234 = local_26;
@@ -369,7 +369,7 @@ fn function_() {
                             let _e249 = (_e248 == 0u);
                             local_32 = _e249;
                             if _e249 {
-                                phi_798_ = true;
+                                phi_777_ = true;
                                 break;
                             }
                             let _e250 = local_29;
@@ -377,19 +377,19 @@ fn function_() {
                             local_33 = (_e250 % _e251);
                             let _e253 = local_32;
                             if _e253 {
-                                phi_798_ = true;
+                                phi_777_ = true;
                                 break;
                             }
                             let _e254 = local_29;
                             let _e255 = local_10;
                             local_34 = (_e254 / _e255);
-                            phi_253_ = 0u;
-                            phi_256_ = 0f;
-                            phi_258_ = 0u;
+                            phi_238_ = 0u;
+                            phi_241_ = 0f;
+                            phi_243_ = 0u;
                             loop {
-                                let _e258 = phi_253_;
-                                let _e260 = phi_256_;
-                                let _e262 = phi_258_;
+                                let _e258 = phi_238_;
+                                let _e260 = phi_241_;
+                                let _e262 = phi_243_;
                                 local_35 = _e258;
                                 local_36 = _e260;
                                 local_37 = _e262;
@@ -403,13 +403,13 @@ fn function_() {
                                     local_39 = (_e266 + _e267);
                                     let _e269 = local_14;
                                     if _e269 {
-                                        phi_764_ = true;
+                                        phi_743_ = true;
                                         break;
                                     }
                                     let _e270 = local_39;
                                     let _e271 = local_16;
                                     if (_e270 >= _e271) {
-                                        phi_319_ = 4294967295u;
+                                        phi_304_ = 4294967295u;
                                     } else {
                                         let _e273 = local_33;
                                         let _e274 = local_15;
@@ -418,7 +418,7 @@ fn function_() {
                                         let _e277 = (_e276 == 0u);
                                         local_41 = _e277;
                                         if _e277 {
-                                            phi_764_ = true;
+                                            phi_743_ = true;
                                             break;
                                         }
                                         let _e278 = local_39;
@@ -430,7 +430,7 @@ fn function_() {
                                         local_43 = (_e283 * _e284);
                                         let _e286 = local_41;
                                         if _e286 {
-                                            phi_764_ = true;
+                                            phi_743_ = true;
                                             break;
                                         }
                                         let _e287 = local_39;
@@ -448,30 +448,30 @@ fn function_() {
                                                 let _e298 = local_44;
                                                 let _e299 = local_7;
                                                 let _e301 = local_42;
-                                                phi_311_ = ((_e298 * _e299) + _e301);
+                                                phi_296_ = ((_e298 * _e299) + _e301);
                                             } else {
-                                                phi_311_ = u32();
+                                                phi_296_ = u32();
                                             }
-                                            let _e304 = phi_311_;
+                                            let _e304 = phi_296_;
                                             let _e305 = local_45;
-                                            phi_313_ = _e304;
-                                            phi_314_ = select(true, false, _e305);
+                                            phi_298_ = _e304;
+                                            phi_299_ = select(true, false, _e305);
                                         } else {
-                                            phi_313_ = u32();
-                                            phi_314_ = true;
+                                            phi_298_ = u32();
+                                            phi_299_ = true;
                                         }
-                                        let _e308 = phi_313_;
-                                        let _e310 = phi_314_;
-                                        phi_319_ = select(_e308, 4294967295u, _e310);
+                                        let _e308 = phi_298_;
+                                        let _e310 = phi_299_;
+                                        phi_304_ = select(_e308, 4294967295u, _e310);
                                     }
-                                    let _e313 = phi_319_;
+                                    let _e313 = phi_304_;
                                     local_46 = _e313;
                                     if (_e313 != 4294967295u) {
                                         let _e315 = local_46;
                                         let _e316 = local_1;
                                         if (_e315 < _e316) {
                                         } else {
-                                            phi_764_ = true;
+                                            phi_743_ = true;
                                             break;
                                         }
                                         let _e318 = local_46;
@@ -484,7 +484,7 @@ fn function_() {
                                         let _e325 = local_1;
                                         if (_e324 < _e325) {
                                         } else {
-                                            phi_764_ = true;
+                                            phi_743_ = true;
                                             break;
                                         }
                                         let _e327 = local_48;
@@ -494,75 +494,75 @@ fn function_() {
                                         let _e333 = local_47;
                                         let _e335 = local_36;
                                         let _e337 = local_36;
-                                        phi_347_ = select(_e337, _e331, (_e331 > _e335));
-                                        phi_348_ = (_e332 + _e333);
+                                        phi_332_ = select(_e337, _e331, (_e331 > _e335));
+                                        phi_333_ = (_e332 + _e333);
                                     } else {
-                                        phi_347_ = _e260;
-                                        phi_348_ = _e262;
+                                        phi_332_ = _e260;
+                                        phi_333_ = _e262;
                                     }
-                                    let _e340 = phi_347_;
-                                    let _e342 = phi_348_;
+                                    let _e340 = phi_332_;
+                                    let _e342 = phi_333_;
                                     let _e343 = local_35;
-                                    phi_254_ = (_e343 + 1u);
-                                    phi_257_ = _e340;
-                                    phi_259_ = _e342;
+                                    phi_239_ = (_e343 + 1u);
+                                    phi_242_ = _e340;
+                                    phi_244_ = _e342;
                                 } else {
-                                    phi_254_ = u32();
-                                    phi_257_ = f32();
-                                    phi_259_ = u32();
+                                    phi_239_ = u32();
+                                    phi_242_ = f32();
+                                    phi_244_ = u32();
                                 }
-                                let _e346 = phi_254_;
-                                let _e348 = phi_257_;
-                                let _e350 = phi_259_;
+                                let _e346 = phi_239_;
+                                let _e348 = phi_242_;
+                                let _e350 = phi_244_;
                                 continue;
                                 continuing {
                                     let _e351 = local_38;
-                                    phi_253_ = _e346;
-                                    phi_256_ = _e348;
-                                    phi_258_ = _e350;
-                                    phi_764_ = _e220;
+                                    phi_238_ = _e346;
+                                    phi_241_ = _e348;
+                                    phi_243_ = _e350;
+                                    phi_743_ = _e220;
                                     break if !(_e351);
                                 }
                             }
-                            let _e354 = phi_764_;
-                            phi_798_ = _e354;
+                            let _e354 = phi_743_;
+                            phi_777_ = _e354;
                             if _e354 {
                                 break;
                             }
                             let _e355 = local_37;
                             let _e356 = local_36;
-                            phi_788_ = _e354;
-                            phi_351_ = type_21(_e355, _e356);
+                            phi_767_ = _e354;
+                            phi_336_ = type_21(_e355, _e356);
                         } else {
-                            phi_788_ = _e220;
-                            phi_351_ = type_21();
+                            phi_767_ = _e220;
+                            phi_336_ = type_21();
                         }
-                        let _e359 = phi_788_;
-                        let _e361 = phi_351_;
+                        let _e359 = phi_767_;
+                        let _e361 = phi_336_;
                         let _e362 = local_31;
-                        phi_787_ = _e359;
-                        phi_353_ = _e361;
-                        phi_354_ = select(true, false, _e362);
+                        phi_766_ = _e359;
+                        phi_338_ = _e361;
+                        phi_339_ = select(true, false, _e362);
                     } else {
-                        phi_787_ = _e220;
-                        phi_353_ = type_21();
-                        phi_354_ = true;
+                        phi_766_ = _e220;
+                        phi_338_ = type_21();
+                        phi_339_ = true;
                     }
-                    let _e365 = phi_787_;
-                    let _e367 = phi_353_;
-                    let _e369 = phi_354_;
+                    let _e365 = phi_766_;
+                    let _e367 = phi_338_;
+                    let _e369 = phi_339_;
                     if _e369 {
-                        phi_359_ = type_21(0u, 0f);
+                        phi_344_ = type_21(0u, 0f);
                     } else {
-                        phi_359_ = _e367;
+                        phi_344_ = _e367;
                     }
-                    let _e371 = phi_359_;
+                    let _e371 = phi_344_;
                     local_49 = _e371.member;
                     local_50 = _e371.member_1;
                     let _e374 = local;
                     if (_e374 < 1536u) {
                     } else {
-                        phi_798_ = true;
+                        phi_777_ = true;
                         break;
                     }
                     let _e376 = local;
@@ -575,7 +575,7 @@ fn function_() {
                     local_52 = _e382;
                     if (_e382 < 1536u) {
                     } else {
-                        phi_798_ = true;
+                        phi_777_ = true;
                         break;
                     }
                     let _e384 = local_52;
@@ -588,7 +588,7 @@ fn function_() {
                     local_54 = _e389;
                     if _e389 {
                     } else {
-                        phi_798_ = true;
+                        phi_777_ = true;
                         break;
                     }
                     let _e390 = local_53;
@@ -601,7 +601,7 @@ fn function_() {
                     local_56 = _e395;
                     if _e395 {
                     } else {
-                        phi_798_ = true;
+                        phi_777_ = true;
                         break;
                     }
                     let _e396 = local_55;
@@ -609,11 +609,11 @@ fn function_() {
                     global_9[_e396] = _e398;
                     storageBarrier();
                     workgroupBarrier();
-                    phi_392_ = 1u;
-                    phi_395_ = false;
+                    phi_377_ = 1u;
+                    phi_380_ = false;
                     loop {
-                        let _e400 = phi_392_;
-                        let _e402 = phi_395_;
+                        let _e400 = phi_377_;
+                        let _e402 = phi_380_;
                         local_57 = _e400;
                         local_58 = _e402;
                         let _e403 = local_57;
@@ -634,7 +634,7 @@ fn function_() {
                             local_60 = _e414;
                             if (_e414 < 1536u) {
                             } else {
-                                phi_777_ = true;
+                                phi_756_ = true;
                                 break;
                             }
                             let _e416 = local_60;
@@ -646,7 +646,7 @@ fn function_() {
                             local_62 = _e421;
                             if (_e421 < 1536u) {
                             } else {
-                                phi_777_ = true;
+                                phi_756_ = true;
                                 break;
                             }
                             let _e423 = local_62;
@@ -661,7 +661,7 @@ fn function_() {
                                 local_64 = _e432;
                                 if (_e432 < 1536u) {
                                 } else {
-                                    phi_777_ = true;
+                                    phi_756_ = true;
                                     break;
                                 }
                                 let _e434 = local_64;
@@ -670,16 +670,16 @@ fn function_() {
                                 let _e437 = local_54;
                                 if _e437 {
                                 } else {
-                                    phi_777_ = true;
+                                    phi_756_ = true;
                                     break;
                                 }
                                 let _e438 = global_9[_e390];
                                 let _e439 = local_65;
-                                phi_455_ = (_e439 == _e438);
+                                phi_440_ = (_e439 == _e438);
                             } else {
-                                phi_455_ = false;
+                                phi_440_ = false;
                             }
-                            let _e442 = phi_455_;
+                            let _e442 = phi_440_;
                             local_66 = _e442;
                             if _e442 {
                                 let _e443 = local;
@@ -689,17 +689,17 @@ fn function_() {
                                 local_67 = _e447;
                                 if (_e447 < 1536u) {
                                 } else {
-                                    phi_777_ = true;
+                                    phi_756_ = true;
                                     break;
                                 }
                                 let _e449 = local_67;
                                 let _e451 = global_9[_e449];
                                 let _e452 = local_61;
-                                phi_469_ = (_e451 + _e452);
+                                phi_454_ = (_e451 + _e452);
                             } else {
-                                phi_469_ = _e418;
+                                phi_454_ = _e418;
                             }
-                            let _e455 = phi_469_;
+                            let _e455 = phi_454_;
                             local_68 = _e455;
                             let _e456 = local_101;
                             let _e457 = local;
@@ -707,7 +707,7 @@ fn function_() {
                             local_69 = _e458;
                             if (_e458 < 1536u) {
                             } else {
-                                phi_777_ = true;
+                                phi_756_ = true;
                                 break;
                             }
                             let _e460 = local_69;
@@ -722,18 +722,18 @@ fn function_() {
                                 local_70 = _e468;
                                 if (_e468 < 1536u) {
                                 } else {
-                                    phi_777_ = true;
+                                    phi_756_ = true;
                                     break;
                                 }
                                 let _e470 = local_70;
                                 let _e472 = global_9[_e470];
                                 let _e473 = local_63;
                                 let _e475 = local_63;
-                                phi_490_ = select(_e475, _e472, (_e472 > _e473));
+                                phi_479_ = select(_e475, _e472, (_e472 > _e473));
                             } else {
-                                phi_490_ = _e425;
+                                phi_479_ = _e425;
                             }
-                            let _e478 = phi_490_;
+                            let _e478 = phi_479_;
                             local_71 = _e478;
                             let _e479 = local_100;
                             let _e480 = local;
@@ -741,7 +741,7 @@ fn function_() {
                             local_72 = _e481;
                             if (_e481 < 1536u) {
                             } else {
-                                phi_777_ = true;
+                                phi_756_ = true;
                                 break;
                             }
                             let _e483 = local_72;
@@ -751,51 +751,51 @@ fn function_() {
                             workgroupBarrier();
                             let _e486 = local_58;
                             let _e488 = local_57;
-                            phi_393_ = (_e488 * 2u);
-                            phi_396_ = !(_e486);
+                            phi_378_ = (_e488 * 2u);
+                            phi_381_ = !(_e486);
                         } else {
-                            phi_393_ = u32();
-                            phi_396_ = bool();
+                            phi_378_ = u32();
+                            phi_381_ = bool();
                         }
-                        let _e491 = phi_393_;
-                        let _e493 = phi_396_;
+                        let _e491 = phi_378_;
+                        let _e493 = phi_381_;
                         continue;
                         continuing {
                             let _e494 = local_59;
-                            phi_392_ = _e491;
-                            phi_395_ = _e493;
-                            phi_777_ = _e365;
+                            phi_377_ = _e491;
+                            phi_380_ = _e493;
+                            phi_756_ = _e365;
                             break if !(_e494);
                         }
                     }
-                    let _e497 = phi_777_;
-                    phi_798_ = _e497;
+                    let _e497 = phi_756_;
+                    phi_777_ = _e497;
                     if _e497 {
                         break;
                     }
                     let _e498 = local_58;
                     if _e498 {
-                        phi_507_ = type_14(256u, 768u);
+                        phi_496_ = type_14(256u, 768u);
                     } else {
-                        phi_507_ = type_14(0u, 512u);
+                        phi_496_ = type_14(0u, 512u);
                     }
-                    let _e500 = phi_507_;
+                    let _e500 = phi_496_;
                     local_73 = _e500.member;
                     local_74 = _e500.member_1;
                     let _e503 = local_27;
                     if _e503 {
-                        phi_798_ = true;
+                        phi_777_ = true;
                         break;
                     }
                     let _e504 = local_28;
                     let _e505 = local_17;
                     if (_e504 >= _e505) {
-                        phi_800_ = _e497;
+                        phi_779_ = _e497;
                     } else {
                         let _e507 = local_29;
                         let _e508 = local_11;
                         if (_e507 >= _e508) {
-                            phi_801_ = _e497;
+                            phi_780_ = _e497;
                         } else {
                             let _e510 = local_73;
                             let _e511 = local;
@@ -803,7 +803,7 @@ fn function_() {
                             local_75 = _e512;
                             if (_e512 < 1536u) {
                             } else {
-                                phi_798_ = true;
+                                phi_777_ = true;
                                 break;
                             }
                             let _e514 = local_75;
@@ -812,7 +812,7 @@ fn function_() {
                             let _e517 = local_56;
                             if _e517 {
                             } else {
-                                phi_798_ = true;
+                                phi_777_ = true;
                                 break;
                             }
                             let _e518 = global_9[_e396];
@@ -821,7 +821,7 @@ fn function_() {
                             let _e522 = (_e521 == 0u);
                             local_77 = _e522;
                             if _e522 {
-                                phi_798_ = true;
+                                phi_777_ = true;
                                 break;
                             }
                             let _e523 = local_29;
@@ -829,17 +829,17 @@ fn function_() {
                             local_78 = (_e523 % _e524);
                             let _e526 = local_77;
                             if _e526 {
-                                phi_798_ = true;
+                                phi_777_ = true;
                                 break;
                             }
                             let _e527 = local_29;
                             let _e528 = local_10;
                             local_79 = (_e527 / _e528);
-                            phi_570_ = 0u;
-                            phi_575_ = (_e519 - _e518);
+                            phi_559_ = 0u;
+                            phi_564_ = (_e519 - _e518);
                             loop {
-                                let _e531 = phi_570_;
-                                let _e533 = phi_575_;
+                                let _e531 = phi_559_;
+                                let _e533 = phi_564_;
                                 local_80 = _e531;
                                 local_81 = _e533;
                                 let _e534 = local_80;
@@ -852,13 +852,13 @@ fn function_() {
                                     local_83 = (_e537 + _e538);
                                     let _e540 = local_14;
                                     if _e540 {
-                                        phi_789_ = true;
+                                        phi_768_ = true;
                                         break;
                                     }
                                     let _e541 = local_83;
                                     let _e542 = local_16;
                                     if (_e541 >= _e542) {
-                                        phi_636_ = 4294967295u;
+                                        phi_625_ = 4294967295u;
                                     } else {
                                         let _e544 = local_78;
                                         let _e545 = local_15;
@@ -867,7 +867,7 @@ fn function_() {
                                         let _e548 = (_e547 == 0u);
                                         local_85 = _e548;
                                         if _e548 {
-                                            phi_789_ = true;
+                                            phi_768_ = true;
                                             break;
                                         }
                                         let _e549 = local_83;
@@ -879,7 +879,7 @@ fn function_() {
                                         local_87 = (_e554 * _e555);
                                         let _e557 = local_85;
                                         if _e557 {
-                                            phi_789_ = true;
+                                            phi_768_ = true;
                                             break;
                                         }
                                         let _e558 = local_83;
@@ -897,30 +897,30 @@ fn function_() {
                                                 let _e569 = local_88;
                                                 let _e570 = local_7;
                                                 let _e572 = local_86;
-                                                phi_628_ = ((_e569 * _e570) + _e572);
+                                                phi_617_ = ((_e569 * _e570) + _e572);
                                             } else {
-                                                phi_628_ = u32();
+                                                phi_617_ = u32();
                                             }
-                                            let _e575 = phi_628_;
+                                            let _e575 = phi_617_;
                                             let _e576 = local_89;
-                                            phi_630_ = _e575;
-                                            phi_631_ = select(true, false, _e576);
+                                            phi_619_ = _e575;
+                                            phi_620_ = select(true, false, _e576);
                                         } else {
-                                            phi_630_ = u32();
-                                            phi_631_ = true;
+                                            phi_619_ = u32();
+                                            phi_620_ = true;
                                         }
-                                        let _e579 = phi_630_;
-                                        let _e581 = phi_631_;
-                                        phi_636_ = select(_e579, 4294967295u, _e581);
+                                        let _e579 = phi_619_;
+                                        let _e581 = phi_620_;
+                                        phi_625_ = select(_e579, 4294967295u, _e581);
                                     }
-                                    let _e584 = phi_636_;
+                                    let _e584 = phi_625_;
                                     local_90 = _e584;
                                     if (_e584 != 4294967295u) {
                                         let _e586 = local_90;
                                         let _e587 = local_1;
                                         if (_e586 < _e587) {
                                         } else {
-                                            phi_789_ = true;
+                                            phi_768_ = true;
                                             break;
                                         }
                                         let _e589 = local_90;
@@ -935,14 +935,14 @@ fn function_() {
                                         local_93 = _e597;
                                         if _e597 {
                                         } else {
-                                            phi_789_ = true;
+                                            phi_768_ = true;
                                             break;
                                         }
                                         let _e598 = local_90;
                                         let _e599 = local_3;
                                         if (_e598 < _e599) {
                                         } else {
-                                            phi_789_ = true;
+                                            phi_768_ = true;
                                             break;
                                         }
                                         let _e601 = local_90;
@@ -951,7 +951,7 @@ fn function_() {
                                         let _e605 = local_93;
                                         if _e605 {
                                         } else {
-                                            phi_789_ = true;
+                                            phi_768_ = true;
                                             break;
                                         }
                                         let _e606 = local_92;
@@ -961,7 +961,7 @@ fn function_() {
                                         let _e611 = local_3;
                                         if (_e610 < _e611) {
                                         } else {
-                                            phi_789_ = true;
+                                            phi_768_ = true;
                                             break;
                                         }
                                         let _e613 = local_92;
@@ -969,58 +969,58 @@ fn function_() {
                                         global_6.member[_e613] = _e616;
                                         let _e617 = local_81;
                                         let _e618 = local_91;
-                                        phi_685_ = (_e617 + _e618);
+                                        phi_674_ = (_e617 + _e618);
                                     } else {
-                                        phi_685_ = _e533;
+                                        phi_674_ = _e533;
                                     }
-                                    let _e621 = phi_685_;
+                                    let _e621 = phi_674_;
                                     let _e622 = local_80;
-                                    phi_571_ = (_e622 + 1u);
-                                    phi_576_ = _e621;
+                                    phi_560_ = (_e622 + 1u);
+                                    phi_565_ = _e621;
                                 } else {
-                                    phi_571_ = u32();
-                                    phi_576_ = u32();
+                                    phi_560_ = u32();
+                                    phi_565_ = u32();
                                 }
-                                let _e625 = phi_571_;
-                                let _e627 = phi_576_;
+                                let _e625 = phi_560_;
+                                let _e627 = phi_565_;
                                 continue;
                                 continuing {
                                     let _e628 = local_82;
-                                    phi_570_ = _e625;
-                                    phi_575_ = _e627;
-                                    phi_789_ = _e497;
+                                    phi_559_ = _e625;
+                                    phi_564_ = _e627;
+                                    phi_768_ = _e497;
                                     break if !(_e628);
                                 }
                             }
-                            let _e631 = phi_789_;
-                            phi_798_ = _e631;
+                            let _e631 = phi_768_;
+                            phi_777_ = _e631;
                             if _e631 {
                                 break;
                             }
                             let _e632 = local;
                             if (_e632 == 255u) {
-                                phi_704_ = true;
+                                phi_693_ = true;
                             } else {
                                 let _e634 = local;
                                 let _e635 = (_e634 + 1025u);
                                 local_95 = _e635;
                                 if (_e635 < 1536u) {
                                 } else {
-                                    phi_798_ = true;
+                                    phi_777_ = true;
                                     break;
                                 }
                                 let _e637 = local_95;
                                 let _e639 = global_9[_e637];
                                 let _e640 = local_28;
-                                phi_704_ = (_e639 != _e640);
+                                phi_693_ = (_e639 != _e640);
                             }
-                            let _e643 = phi_704_;
+                            let _e643 = phi_693_;
                             if _e643 {
                                 let _e644 = local_29;
                                 let _e645 = local_2;
                                 if (_e644 < _e645) {
                                 } else {
-                                    phi_798_ = true;
+                                    phi_777_ = true;
                                     break;
                                 }
                                 let _e647 = local_29;
@@ -1032,7 +1032,7 @@ fn function_() {
                                 local_96 = _e653;
                                 if (_e653 < 1536u) {
                                 } else {
-                                    phi_798_ = true;
+                                    phi_777_ = true;
                                     break;
                                 }
                                 let _e655 = local_96;
@@ -1042,7 +1042,7 @@ fn function_() {
                                 let _e659 = local_4;
                                 if (_e658 < _e659) {
                                 } else {
-                                    phi_798_ = true;
+                                    phi_777_ = true;
                                     break;
                                 }
                                 let _e661 = local_29;
@@ -1053,41 +1053,41 @@ fn function_() {
                                     let _e667 = local_5;
                                     if (13u < _e667) {
                                     } else {
-                                        phi_798_ = true;
+                                        phi_777_ = true;
                                         break;
                                     }
                                     let _e671 = local_76;
                                     let _e672 = atomicAdd((&global_8.member[13u]), _e671);
                                 }
                             }
-                            phi_801_ = _e631;
+                            phi_780_ = _e631;
                         }
-                        let _e674 = phi_801_;
-                        phi_800_ = _e674;
+                        let _e674 = phi_780_;
+                        phi_779_ = _e674;
                     }
-                    let _e676 = phi_800_;
+                    let _e676 = phi_779_;
                     storageBarrier();
                     workgroupBarrier();
                     let _e677 = local_23;
                     let _e678 = local_6;
-                    phi_799_ = _e676;
-                    phi_201_ = (_e677 + _e678);
+                    phi_778_ = _e676;
+                    phi_186_ = (_e677 + _e678);
                 } else {
-                    phi_799_ = _e220;
-                    phi_201_ = u32();
+                    phi_778_ = _e220;
+                    phi_186_ = u32();
                 }
-                let _e681 = phi_799_;
-                let _e683 = phi_201_;
+                let _e681 = phi_778_;
+                let _e683 = phi_186_;
                 continue;
                 continuing {
                     let _e684 = local_24;
-                    phi_770_ = _e681;
-                    phi_200_ = _e683;
-                    phi_798_ = _e681;
+                    phi_749_ = _e681;
+                    phi_185_ = _e683;
+                    phi_777_ = _e681;
                     break if !(_e684);
                 }
             }
-            let _e687 = phi_798_;
+            let _e687 = phi_777_;
             if _e687 {
                 break;
             }

@@ -104,42 +104,42 @@ fn function_() {
     var local_38: u32;
     var local_39: bool;
     var local_40: u32;
-    var phi_518_: bool;
-    var phi_102_: u32;
-    var phi_105_: f32;
-    var phi_130_: u32;
-    var phi_133_: bool;
-    var phi_135_: f32;
-    var phi_137_: f32;
-    var phi_219_: bool;
-    var phi_220_: bool;
-    var phi_222_: bool;
-    var phi_223_: bool;
-    var phi_224_: bool;
-    var phi_225_: bool;
-    var phi_242_: f32;
-    var phi_273_: bool;
-    var phi_301_: f32;
-    var phi_302_: f32;
-    var phi_308_: f32;
-    var phi_310_: f32;
-    var phi_324_: f32;
-    var phi_325_: f32;
+    var phi_604_: bool;
+    var phi_103_: u32;
+    var phi_106_: f32;
     var phi_131_: u32;
     var phi_134_: bool;
     var phi_136_: f32;
     var phi_138_: f32;
-    var phi_504_: bool;
-    var phi_337_: bool;
+    var phi_220_: bool;
+    var phi_221_: bool;
+    var phi_223_: bool;
+    var phi_224_: bool;
+    var phi_225_: bool;
+    var phi_226_: bool;
+    var phi_243_: f32;
+    var phi_274_: bool;
+    var phi_302_: f32;
+    var phi_303_: f32;
+    var phi_309_: f32;
+    var phi_311_: f32;
+    var phi_325_: f32;
+    var phi_326_: f32;
+    var phi_132_: u32;
+    var phi_135_: bool;
+    var phi_137_: f32;
+    var phi_139_: f32;
+    var phi_590_: bool;
     var phi_338_: bool;
-    var phi_420_: f32;
-    var phi_525_: bool;
-    var phi_103_: u32;
-    var phi_106_: f32;
-    var phi_524_: bool;
-    var phi_431_: u32;
-    var phi_432_: u32;
-    var phi_536_: bool;
+    var phi_339_: bool;
+    var phi_421_: f32;
+    var phi_611_: bool;
+    var phi_104_: u32;
+    var phi_107_: f32;
+    var phi_610_: bool;
+    var phi_518_: u32;
+    var phi_519_: u32;
+    var phi_622_: bool;
     var local_41: f32;
 
     let _e74 = global_8;
@@ -156,13 +156,13 @@ fn function_() {
             let _e93 = global_5.member.member_1;
             local_4 = (_e90 * _e93);
             local_5 = (_e79.x * 256u);
-            phi_518_ = false;
-            phi_102_ = ((_e78.x * 256u) + _e77);
-            phi_105_ = 0f;
+            phi_604_ = false;
+            phi_103_ = ((_e78.x * 256u) + _e77);
+            phi_106_ = 0f;
             loop {
-                let _e99 = phi_518_;
-                let _e101 = phi_102_;
-                let _e103 = phi_105_;
+                let _e99 = phi_604_;
+                let _e101 = phi_103_;
+                let _e103 = phi_106_;
                 local_6 = _e101;
                 local_7 = _e103;
                 let _e104 = local_6;
@@ -174,7 +174,7 @@ fn function_() {
                     let _e108 = local_2;
                     if (_e107 < _e108) {
                     } else {
-                        phi_524_ = true;
+                        phi_610_ = true;
                         break;
                     }
                     let _e110 = local_6;
@@ -182,15 +182,15 @@ fn function_() {
                     let _e116 = global_5.member.member_2;
                     local_9 = _e116;
                     local_38 = select(_e116, _e113, (_e113 < _e116));
-                    phi_130_ = 0u;
-                    phi_133_ = false;
-                    phi_135_ = 1f;
-                    phi_137_ = _e103;
+                    phi_131_ = 0u;
+                    phi_134_ = false;
+                    phi_136_ = 1f;
+                    phi_138_ = _e103;
                     loop {
-                        let _e120 = phi_130_;
-                        let _e122 = phi_133_;
-                        let _e124 = phi_135_;
-                        let _e126 = phi_137_;
+                        let _e120 = phi_131_;
+                        let _e122 = phi_134_;
+                        let _e124 = phi_136_;
+                        let _e126 = phi_138_;
                         local_10 = _e120;
                         local_11 = _e122;
                         local_12 = _e124;
@@ -209,7 +209,7 @@ fn function_() {
                             let _e136 = local_1;
                             if (_e135 < _e136) {
                             } else {
-                                phi_504_ = true;
+                                phi_590_ = true;
                                 break;
                             }
                             let _e138 = local_15;
@@ -221,7 +221,7 @@ fn function_() {
                             let _e145 = local_1;
                             if (_e144 < _e145) {
                             } else {
-                                phi_504_ = true;
+                                phi_590_ = true;
                                 break;
                             }
                             let _e147 = local_17;
@@ -233,7 +233,7 @@ fn function_() {
                             let _e154 = local_1;
                             if (_e153 < _e154) {
                             } else {
-                                phi_504_ = true;
+                                phi_590_ = true;
                                 break;
                             }
                             let _e156 = local_19;
@@ -245,7 +245,7 @@ fn function_() {
                             let _e163 = local_1;
                             if (_e162 < _e163) {
                             } else {
-                                phi_504_ = true;
+                                phi_590_ = true;
                                 break;
                             }
                             let _e165 = local_21;
@@ -257,7 +257,7 @@ fn function_() {
                             let _e172 = local_1;
                             if (_e171 < _e172) {
                             } else {
-                                phi_504_ = true;
+                                phi_590_ = true;
                                 break;
                             }
                             let _e174 = local_23;
@@ -276,46 +276,46 @@ fn function_() {
                                         let _e194 = bitcast<u32>(_e193);
                                         local_26 = _e194;
                                         if (_e194 == 0u) {
-                                            phi_219_ = false;
+                                            phi_220_ = false;
                                         } else {
                                             let _e196 = local_26;
-                                            phi_219_ = (_e196 <= 2139095040u);
+                                            phi_220_ = (_e196 <= 2139095040u);
                                         }
-                                        let _e199 = phi_219_;
-                                        phi_220_ = _e199;
+                                        let _e199 = phi_220_;
+                                        phi_221_ = _e199;
                                     } else {
-                                        phi_220_ = bool();
+                                        phi_221_ = bool();
                                     }
-                                    let _e201 = phi_220_;
+                                    let _e201 = phi_221_;
                                     let _e202 = local_25;
-                                    phi_222_ = _e201;
-                                    phi_223_ = select(true, false, _e202);
+                                    phi_223_ = _e201;
+                                    phi_224_ = select(true, false, _e202);
                                 } else {
-                                    phi_222_ = bool();
-                                    phi_223_ = true;
+                                    phi_223_ = bool();
+                                    phi_224_ = true;
                                 }
-                                let _e205 = phi_222_;
-                                let _e207 = phi_223_;
-                                phi_224_ = _e205;
-                                phi_225_ = _e207;
+                                let _e205 = phi_223_;
+                                let _e207 = phi_224_;
+                                phi_225_ = _e205;
+                                phi_226_ = _e207;
                             } else {
-                                phi_224_ = bool();
-                                phi_225_ = true;
+                                phi_225_ = bool();
+                                phi_226_ = true;
                             }
-                            let _e209 = phi_224_;
-                            let _e211 = phi_225_;
+                            let _e209 = phi_225_;
+                            let _e211 = phi_226_;
                             let _e212 = select(_e209, false, _e211);
                             local_39 = _e212;
                             if _e212 {
                                 let _e213 = local_24;
                                 if (_e213 > 1f) {
-                                    phi_242_ = 1f;
+                                    phi_243_ = 1f;
                                 } else {
                                     let _e215 = local_24;
                                     let _e217 = local_24;
-                                    phi_242_ = select(0f, _e217, (_e215 >= 0f));
+                                    phi_243_ = select(0f, _e217, (_e215 >= 0f));
                                 }
-                                let _e220 = phi_242_;
+                                let _e220 = phi_243_;
                                 let _e222 = local_12;
                                 let _e224 = local_22;
                                 let _e225 = bitcast<u32>(_e224);
@@ -325,16 +325,16 @@ fn function_() {
                                     let _e279 = global_5.member.member_15.member;
                                     let _e284 = global_5.member.member_15.member_2;
                                     let _e290 = global_5.member.member_15.member_3;
-                                    phi_310_ = (0.5f * ((((2f * _e274) * _e279) / (_e284 - _e279)) * _e290));
+                                    phi_311_ = (0.5f * ((((2f * _e274) * _e279) / (_e284 - _e279)) * _e290));
                                 } else {
                                     let _e227 = local_27;
                                     if (_e227 == 0u) {
-                                        phi_273_ = false;
+                                        phi_274_ = false;
                                     } else {
                                         let _e229 = local_27;
-                                        phi_273_ = (_e229 <= 2139095040u);
+                                        phi_274_ = (_e229 <= 2139095040u);
                                     }
-                                    let _e232 = phi_273_;
+                                    let _e232 = phi_274_;
                                     if _e232 {
                                         let _e236 = global_5.member.member_15.member_1;
                                         let _e241 = global_5.member.member_15.member;
@@ -344,88 +344,88 @@ fn function_() {
                                         let _e253 = ((((2f * _e236) * _e241) / (_e246 - _e241)) * _e252);
                                         local_29 = _e253;
                                         if (_e253 == 0f) {
-                                            phi_301_ = 0f;
+                                            phi_302_ = 0f;
                                         } else {
                                             let _e255 = local_28;
                                             let _e256 = local_22;
                                             let _e259 = local_29;
-                                            phi_301_ = (_e259 * (1f - (_e255 / _e256)));
+                                            phi_302_ = (_e259 * (1f - (_e255 / _e256)));
                                         }
-                                        let _e262 = phi_301_;
-                                        phi_302_ = _e262;
+                                        let _e262 = phi_302_;
+                                        phi_303_ = _e262;
                                     } else {
-                                        phi_302_ = bitcast<f32>(_e74);
+                                        phi_303_ = bitcast<f32>(_e74);
                                     }
-                                    let _e264 = phi_302_;
+                                    let _e264 = phi_303_;
                                     local_30 = _e264;
                                     if (_e264 < 0f) {
                                         let _e266 = local_30;
-                                        phi_308_ = -(_e266);
+                                        phi_309_ = -(_e266);
                                     } else {
-                                        phi_308_ = _e264;
+                                        phi_309_ = _e264;
                                     }
-                                    let _e269 = phi_308_;
-                                    phi_310_ = (0.5f * _e269);
+                                    let _e269 = phi_309_;
+                                    phi_311_ = (0.5f * _e269);
                                 }
-                                let _e294 = phi_310_;
+                                let _e294 = phi_311_;
                                 let _e298 = select(_e294, 0f, ((bitcast<u32>(_e294) & 2147483647u) > 2139095040u));
                                 let _e299 = local_13;
                                 let _e301 = local_13;
-                                phi_324_ = (_e222 * (1f - _e220));
-                                phi_325_ = select(_e301, _e298, (_e298 > _e299));
+                                phi_325_ = (_e222 * (1f - _e220));
+                                phi_326_ = select(_e301, _e298, (_e298 > _e299));
                             } else {
-                                phi_324_ = _e124;
-                                phi_325_ = _e126;
+                                phi_325_ = _e124;
+                                phi_326_ = _e126;
                             }
-                            let _e304 = phi_324_;
-                            let _e306 = phi_325_;
+                            let _e304 = phi_325_;
+                            let _e306 = phi_326_;
                             let _e307 = local_39;
                             let _e308 = local_11;
-                            phi_131_ = (_e179 + 1u);
-                            phi_134_ = select(_e308, true, _e307);
-                            phi_136_ = _e304;
-                            phi_138_ = _e306;
+                            phi_132_ = (_e179 + 1u);
+                            phi_135_ = select(_e308, true, _e307);
+                            phi_137_ = _e304;
+                            phi_139_ = _e306;
                         } else {
-                            phi_131_ = u32();
-                            phi_134_ = bool();
-                            phi_136_ = f32();
-                            phi_138_ = f32();
+                            phi_132_ = u32();
+                            phi_135_ = bool();
+                            phi_137_ = f32();
+                            phi_139_ = f32();
                         }
-                        let _e311 = phi_131_;
-                        let _e313 = phi_134_;
-                        let _e315 = phi_136_;
-                        let _e317 = phi_138_;
+                        let _e311 = phi_132_;
+                        let _e313 = phi_135_;
+                        let _e315 = phi_137_;
+                        let _e317 = phi_139_;
                         continue;
                         continuing {
                             let _e318 = local_14;
-                            phi_130_ = _e311;
-                            phi_133_ = _e313;
-                            phi_135_ = _e315;
-                            phi_137_ = _e317;
-                            phi_504_ = _e99;
+                            phi_131_ = _e311;
+                            phi_134_ = _e313;
+                            phi_136_ = _e315;
+                            phi_138_ = _e317;
+                            phi_590_ = _e99;
                             break if !(_e318);
                         }
                     }
-                    let _e321 = phi_504_;
-                    phi_524_ = _e321;
+                    let _e321 = phi_590_;
+                    phi_610_ = _e321;
                     if _e321 {
                         break;
                     }
                     let _e322 = local_38;
                     if (_e322 == 0u) {
-                        phi_338_ = true;
+                        phi_339_ = true;
                     } else {
                         let _e324 = local_11;
                         if _e324 {
                             let _e325 = local_12;
-                            phi_337_ = (_e325 > 0f);
+                            phi_338_ = (_e325 > 0f);
                         } else {
-                            phi_337_ = false;
+                            phi_338_ = false;
                         }
-                        let _e328 = phi_337_;
-                        phi_338_ = _e328;
+                        let _e328 = phi_338_;
+                        phi_339_ = _e328;
                     }
-                    let _e330 = phi_338_;
+                    let _e330 = phi_339_;
                     if _e330 {
                         let _e334 = global_5.member.member_15.member_1;
                         let _e339 = global_5.member.member_15.member;
@@ -435,36 +435,36 @@ fn function_() {
                         let _e356 = select(_e352, 0f, ((bitcast<u32>(_e352) & 2147483647u) > 2139095040u));
                         let _e357 = local_13;
                         let _e359 = local_13;
-                        phi_420_ = select(_e359, _e356, (_e356 > _e357));
+                        phi_421_ = select(_e359, _e356, (_e356 > _e357));
                     } else {
                         let _e453 = local_41;
-                        phi_420_ = _e453;
+                        phi_421_ = _e453;
                     }
-                    let _e362 = phi_420_;
+                    let _e362 = phi_421_;
                     let _e363 = local_6;
                     let _e364 = local_5;
-                    phi_525_ = _e321;
-                    phi_103_ = (_e363 + _e364);
-                    phi_106_ = _e362;
+                    phi_611_ = _e321;
+                    phi_104_ = (_e363 + _e364);
+                    phi_107_ = _e362;
                 } else {
-                    phi_525_ = _e99;
-                    phi_103_ = u32();
-                    phi_106_ = f32();
+                    phi_611_ = _e99;
+                    phi_104_ = u32();
+                    phi_107_ = f32();
                 }
-                let _e367 = phi_525_;
-                let _e369 = phi_103_;
-                let _e371 = phi_106_;
+                let _e367 = phi_611_;
+                let _e369 = phi_104_;
+                let _e371 = phi_107_;
                 continue;
                 continuing {
                     let _e372 = local_8;
-                    phi_518_ = _e367;
-                    phi_102_ = _e369;
-                    phi_105_ = _e371;
-                    phi_524_ = _e367;
+                    phi_604_ = _e367;
+                    phi_103_ = _e369;
+                    phi_106_ = _e371;
+                    phi_610_ = _e367;
                     break if !(_e372);
                 }
             }
-            let _e375 = phi_524_;
+            let _e375 = phi_610_;
             if _e375 {
                 break;
             }
@@ -482,9 +482,9 @@ fn function_() {
             global_3[_e380] = _e382;
             storageBarrier();
             workgroupBarrier();
-            phi_431_ = 128u;
+            phi_518_ = 128u;
             loop {
-                let _e384 = phi_431_;
+                let _e384 = phi_518_;
                 local_33 = _e384;
                 let _e385 = local_33;
                 let _e386 = (_e385 > 0u);
@@ -496,7 +496,7 @@ fn function_() {
                         let _e390 = local_32;
                         if _e390 {
                         } else {
-                            phi_536_ = true;
+                            phi_622_ = true;
                             break;
                         }
                         let _e391 = global_3[_e380];
@@ -507,7 +507,7 @@ fn function_() {
                         local_36 = _e394;
                         if (_e394 < 512u) {
                         } else {
-                            phi_536_ = true;
+                            phi_622_ = true;
                             break;
                         }
                         let _e396 = local_36;
@@ -518,7 +518,7 @@ fn function_() {
                         let _e403 = local_32;
                         if _e403 {
                         } else {
-                            phi_536_ = true;
+                            phi_622_ = true;
                             break;
                         }
                         let _e404 = local_40;
@@ -527,20 +527,20 @@ fn function_() {
                     storageBarrier();
                     workgroupBarrier();
                     let _e405 = local_33;
-                    phi_432_ = (_e405 / 2u);
+                    phi_519_ = (_e405 / 2u);
                 } else {
-                    phi_432_ = u32();
+                    phi_519_ = u32();
                 }
-                let _e408 = phi_432_;
+                let _e408 = phi_519_;
                 continue;
                 continuing {
                     let _e409 = local_34;
-                    phi_431_ = _e408;
-                    phi_536_ = _e375;
+                    phi_518_ = _e408;
+                    phi_622_ = _e375;
                     break if !(_e409);
                 }
             }
-            let _e412 = phi_536_;
+            let _e412 = phi_622_;
             if _e412 {
                 break;
             }

@@ -28,6 +28,121 @@ pub trait Group {
     /// (one reading sampled images: SPIR-V holds no pointer to an image in a closure's captures):
     /// the invocation's own id on the GPU, every id on the CPU.
     fn invocations(&self) -> core::ops::Range<u32>;
+
+    /// The subgroup size `s` when this workgroup runs as whole subgroups of `s` invocations that
+    /// [`Group::each_scanned`] and [`Group::each_reduced`] combine words across (`s` a power of two,
+    /// at least 2, the same for every invocation); `None` in a kernel built without subgroup
+    /// operations, or where the subgroups are not whole. Uniform, so code may branch on it.
+    #[inline]
+    fn subgroup_size(&self) -> Option<u32> {
+        None
+    }
+
+    /// Like [`Group::each`] over positions instead of local ids: `input(p)` for every position
+    /// `p < size`, then `output(p, x)` (both with `data`, which they share), `x` the inclusive scan under `op` of the inputs of `p`'s
+    /// subgroup up to `p`, then a barrier. Subgroup `k` holds positions `k·s .. (k+1)·s` (`s` as
+    /// [`Group::subgroup_size`]); which invocation runs which position is the backend's (on the GPU
+    /// it need not be the local id), so `input` and `output` may touch only what position `p` owns
+    /// or nothing another position writes in the same step. Without subgroups every position is
+    /// its own subgroup.
+    #[inline]
+    fn each_scanned<O: WordOp, D: ?Sized>(
+        &mut self,
+        _op: O,
+        data: &mut D,
+        mut input: impl FnMut(&D, u32) -> u32,
+        mut output: impl FnMut(&mut D, u32, u32),
+    ) {
+        self.each(|p| {
+            let x = input(data, p);
+            output(data, p, x)
+        });
+    }
+
+    /// As [`Group::each_scanned`], but `x` is the reduction under `op` of all the inputs of `p`'s
+    /// subgroup.
+    #[inline]
+    fn each_reduced<O: WordOp, D: ?Sized>(
+        &mut self,
+        _op: O,
+        data: &mut D,
+        mut input: impl FnMut(&D, u32) -> u32,
+        mut output: impl FnMut(&mut D, u32, u32),
+    ) {
+        self.each(|p| {
+            let x = input(data, p);
+            output(data, p, x)
+        });
+    }
+}
+
+/// An associative and commutative operation on words that a subgroup can scan or reduce in one
+/// instruction: the operations of the workgroup scans and reductions ([`crate::wg`]).
+pub trait WordOp: Copy {
+    /// `x` such that `apply(x, a) == a` for every `a`.
+    const IDENTITY: u32;
+    fn apply(self, a: u32, b: u32) -> u32;
+    /// The inclusive scan of `v` over the invocation's subgroup, up to and including it (`lane`:
+    /// its place in the subgroup of `size`).
+    #[cfg(target_arch = "spirv")]
+    fn subgroup_inclusive(self, v: u32, lane: u32, size: u32) -> u32;
+    /// The reduction of `v` over the invocation's subgroup.
+    #[cfg(target_arch = "spirv")]
+    fn subgroup_reduce(self, v: u32) -> u32;
+}
+
+/// Wrapping addition.
+#[derive(Clone, Copy)]
+pub struct Add;
+
+/// Unsigned maximum.
+#[derive(Clone, Copy)]
+pub struct Max;
+
+impl WordOp for Add {
+    const IDENTITY: u32 = 0;
+    #[inline]
+    fn apply(self, a: u32, b: u32) -> u32 {
+        a.wrapping_add(b)
+    }
+    #[cfg(target_arch = "spirv")]
+    #[inline]
+    fn subgroup_inclusive(self, v: u32, _lane: u32, _size: u32) -> u32 {
+        spirv_std::arch::subgroup_inclusive_i_add(v)
+    }
+    #[cfg(target_arch = "spirv")]
+    #[inline]
+    fn subgroup_reduce(self, v: u32) -> u32 {
+        spirv_std::arch::subgroup_i_add(v)
+    }
+}
+
+impl WordOp for Max {
+    const IDENTITY: u32 = 0;
+    #[inline]
+    fn apply(self, a: u32, b: u32) -> u32 {
+        if a > b { a } else { b }
+    }
+    /// By shuffles: WGSL and HLSL scan only sums and products in one instruction.
+    #[cfg(target_arch = "spirv")]
+    #[inline]
+    fn subgroup_inclusive(self, v: u32, lane: u32, size: u32) -> u32 {
+        let mut x = v;
+        let mut d = 1;
+        while d < size {
+            let before = spirv_std::arch::subgroup_shuffle_up(x, d);
+            if lane >= d {
+                x = self.apply(before, x);
+            }
+            d *= 2;
+        }
+        x
+    }
+    #[cfg(target_arch = "spirv")]
+    #[inline]
+    fn subgroup_reduce(self, v: u32) -> u32 {
+        spirv_std::arch::subgroup_u_max(v)
+    }
 }
 
 /// Read access to a storage buffer of `u32` words: all a kernel's read-only binding offers (on the
@@ -60,14 +175,57 @@ pub fn params<P: bytemuck::Pod>(words: &[u32]) -> P {
 
 #[cfg(not(target_arch = "spirv"))]
 mod cpu {
-    use super::{Group, Load, Mem};
+    use super::{Group, Load, Mem, WordOp};
     use core::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
-    /// A workgroup emulated on one CPU thread: `each` loops over the local ids.
+    /// A workgroup emulated on one CPU thread: `each` loops over the local ids. With
+    /// `subgroup_size`, it runs as subgroups of that many invocations (a power of two dividing
+    /// `size`, at most [`CpuGroup::MAX_SUBGROUP`]): position `p` is local id `p`, and a subgroup's
+    /// scan or reduction runs over its inputs in order.
     pub struct CpuGroup {
         pub size: u32,
         pub workgroup_id: [u32; 3],
         pub num_workgroups: [u32; 3],
+        pub subgroup_size: Option<u32>,
+    }
+
+    impl CpuGroup {
+        /// The widest subgroup the CPU emulates.
+        pub const MAX_SUBGROUP: u32 = 256;
+
+        /// `input` of every position, `op` over each subgroup's inputs (`scan`: the running value;
+        /// else the subgroup's total), then `output`.
+        fn each_combined<O: WordOp, D: ?Sized>(
+            &mut self,
+            op: O,
+            scan: bool,
+            data: &mut D,
+            mut input: impl FnMut(&D, u32) -> u32,
+            mut output: impl FnMut(&mut D, u32, u32),
+        ) {
+            let s = self.subgroup_size.unwrap_or(1);
+            assert!(
+                s.is_power_of_two() && s <= Self::MAX_SUBGROUP && self.size % s == 0,
+                "subgroups of {s} in a workgroup of {}",
+                self.size
+            );
+            let mut words = [0u32; Self::MAX_SUBGROUP as usize];
+            let mut first = 0;
+            while first < self.size {
+                let lanes = &mut words[..s as usize];
+                let mut total = O::IDENTITY;
+                for (lane, w) in (0..).zip(lanes.iter_mut()) {
+                    *w = input(data, first + lane);
+                    total = op.apply(total, *w);
+                }
+                let mut running = O::IDENTITY;
+                for (lane, w) in (0..).zip(lanes.iter()) {
+                    running = op.apply(running, *w);
+                    output(data, first + lane, if scan { running } else { total });
+                }
+                first += s;
+            }
+        }
     }
 
     impl Group for CpuGroup {
@@ -92,6 +250,30 @@ mod cpu {
         #[inline]
         fn invocations(&self) -> core::ops::Range<u32> {
             0..self.size
+        }
+        #[inline]
+        fn subgroup_size(&self) -> Option<u32> {
+            self.subgroup_size
+        }
+        #[inline]
+        fn each_scanned<O: WordOp, D: ?Sized>(
+            &mut self,
+            op: O,
+            data: &mut D,
+            input: impl FnMut(&D, u32) -> u32,
+            output: impl FnMut(&mut D, u32, u32),
+        ) {
+            self.each_combined(op, true, data, input, output);
+        }
+        #[inline]
+        fn each_reduced<O: WordOp, D: ?Sized>(
+            &mut self,
+            op: O,
+            data: &mut D,
+            input: impl FnMut(&D, u32) -> u32,
+            output: impl FnMut(&mut D, u32, u32),
+        ) {
+            self.each_combined(op, false, data, input, output);
         }
     }
 
@@ -150,12 +332,20 @@ mod cpu {
         /// packed format ([`crate::texels`]); `buffers` holds its packed texels. Empty for a kernel
         /// with no images.
         pub image_layouts: &'a [[u32; 2]],
+        /// The subgroups a kernel built with subgroup operations runs as (`CpuGroup::subgroup_size`;
+        /// one no wider than the workgroup), `None` for one built without.
+        pub subgroup_size: Option<u32>,
     }
 
     impl<'a> CpuDispatch<'a> {
         #[inline]
         pub fn group(&self, size: u32) -> CpuGroup {
-            CpuGroup { size, workgroup_id: self.workgroup_id, num_workgroups: self.num_workgroups }
+            CpuGroup {
+                size,
+                workgroup_id: self.workgroup_id,
+                num_workgroups: self.num_workgroups,
+                subgroup_size: self.subgroup_size.filter(|&s| s <= size),
+            }
         }
         #[inline]
         pub fn mem(&self, binding: usize) -> CpuMem<'a> {
@@ -168,7 +358,7 @@ pub use cpu::{CpuDispatch, CpuGroup, CpuMem};
 
 #[cfg(target_arch = "spirv")]
 mod gpu {
-    use super::{Group, Load, Mem};
+    use super::{Group, Load, Mem, WordOp};
     use spirv_std::arch::{atomic_i_add, atomic_u_max, control_barrier};
     use spirv_std::memory::{Scope, Semantics};
 
@@ -205,6 +395,81 @@ mod gpu {
         #[inline]
         fn invocations(&self) -> core::ops::Range<u32> {
             self.local_index..self.local_index + 1
+        }
+    }
+
+    /// The invocation's view of its workgroup in a kernel built with subgroup operations: as
+    /// [`GpuGroup`], and its place among the subgroups (the `SubgroupSize`, `NumSubgroups`,
+    /// `SubgroupId` and `SubgroupLocalInvocationId` built-ins).
+    pub struct GpuSubgroupGroup {
+        pub group: GpuGroup,
+        pub subgroup_size: u32,
+        pub num_subgroups: u32,
+        pub subgroup_id: u32,
+        pub lane: u32,
+    }
+
+    impl GpuSubgroupGroup {
+        /// The position this invocation runs in `each_scanned` and `each_reduced`: subgroup-major,
+        /// whatever the local id (Vulkan does not tie one to the other).
+        #[inline]
+        fn position(&self) -> u32 {
+            self.subgroup_id * self.subgroup_size + self.lane
+        }
+    }
+
+    impl Group for GpuSubgroupGroup {
+        #[inline]
+        fn size(&self) -> u32 {
+            self.group.size
+        }
+        #[inline]
+        fn workgroup_id(&self) -> [u32; 3] {
+            self.group.workgroup_id
+        }
+        #[inline]
+        fn num_workgroups(&self) -> [u32; 3] {
+            self.group.num_workgroups
+        }
+        #[inline]
+        fn each(&mut self, f: impl FnMut(u32)) {
+            self.group.each(f);
+        }
+        #[inline]
+        fn invocations(&self) -> core::ops::Range<u32> {
+            self.group.invocations()
+        }
+        #[inline]
+        fn subgroup_size(&self) -> Option<u32> {
+            let s = self.subgroup_size;
+            // Whole subgroups only: then positions cover the workgroup once.
+            if s >= 2 && s & (s - 1) == 0 && self.num_subgroups * s == self.group.size { Some(s) } else { None }
+        }
+        #[inline]
+        fn each_scanned<O: WordOp, D: ?Sized>(
+            &mut self,
+            op: O,
+            data: &mut D,
+            mut input: impl FnMut(&D, u32) -> u32,
+            mut output: impl FnMut(&mut D, u32, u32),
+        ) {
+            let p = self.position();
+            let x = op.subgroup_inclusive(input(data, p), self.lane, self.subgroup_size);
+            output(data, p, x);
+            self.group.each(|_| {});
+        }
+        #[inline]
+        fn each_reduced<O: WordOp, D: ?Sized>(
+            &mut self,
+            op: O,
+            data: &mut D,
+            mut input: impl FnMut(&D, u32) -> u32,
+            mut output: impl FnMut(&mut D, u32, u32),
+        ) {
+            let p = self.position();
+            let x = op.subgroup_reduce(input(data, p));
+            output(data, p, x);
+            self.group.each(|_| {});
         }
     }
 
@@ -251,4 +516,4 @@ mod gpu {
     }
 }
 #[cfg(target_arch = "spirv")]
-pub use gpu::{GpuGroup, GpuMem, GpuRead};
+pub use gpu::{GpuGroup, GpuMem, GpuRead, GpuSubgroupGroup};

@@ -69,7 +69,7 @@ pub fn plan_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &GatherParams, sh: &mu
         }
         sh[lid as usize] = widest;
     });
-    let m = crate::wg::inclusive_scan(g, sh, 0, crate::wg::max);
+    let m = crate::wg::inclusive_scan(g, sh, 0, crate::wg::Max);
     g.each(|lid| {
         if lid == 255 {
             plan.atomic_max(0, sh[m + lid as usize]);
@@ -133,7 +133,7 @@ kernel!(
 );
 kernel!(
     /// The largest CoC radius present, into the plan word the gather reads.
-    GATHER_PLAN = gather_plan [256] (GatherParams) shared [u32; 2 * 256] { read depth, plan } => plan_pass
+    GATHER_PLAN = gather_plan [256 subgroups] (GatherParams) shared [u32; 2 * 256] { read depth, plan } => plan_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

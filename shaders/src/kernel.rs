@@ -21,6 +21,11 @@
 pub struct KernelDesc {
     /// The SPIR-V entry point name.
     pub entry: &'static str,
+    /// The entry point of the kernel's variant that scans and reduces in subgroups (declared
+    /// `[threads subgroups]`), for devices with subgroup arithmetic: the same results, fewer
+    /// barriers. Its module needs the `GroupNonUniform`, `GroupNonUniformArithmetic` and
+    /// `GroupNonUniformShuffleRelative` capabilities.
+    pub subgroup_entry: Option<&'static str>,
     /// Invocations per workgroup (one-dimensional for every kernel here).
     pub workgroup_size: u32,
     /// Bindings `0..bindings` of descriptor set 0: storage buffers, and the sampled images of
@@ -126,6 +131,10 @@ pub const fn binding_mask(which: &[bool]) -> u32 {
 
 /// `kernel!(NAME = entry_fn [threads] (Params) shared [u32; N] { read a, read b, c } => body);`
 ///
+/// `[threads subgroups]` also builds the `<entry_fn>::subgroups` entry point
+/// (`KernelDesc::subgroup_entry`): the same body, whose group scans and reduces in subgroups
+/// ([`crate::wg`]). Mark the kernels that scan or reduce.
+///
 /// Each binding is a name, marked `read` when the kernel only reads it. A `read` binding is declared
 /// `&[u32]` on the GPU (rust-gpu decorates it `NonWritable`) and reaches the body as a
 /// [`Load`](crate::exec::Load) (`GpuRead`), so a store or an atomic to it is a compile error; the
@@ -141,13 +150,13 @@ pub const fn binding_mask(which: &[bool]) -> u32 {
 /// `body(&mut group, &params, bindings...)`, the bindings in declaration order.
 #[macro_export]
 macro_rules! kernel {
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($bind:tt)* }
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt $($sg:ident)?] ($params:ty) shared [u32; $n:expr] { $($bind:tt)* }
         => $body:ident) => {
-        $crate::kernel!(@parse [$(#[$doc])* $desc $entry [$threads] ($params) $body
+        $crate::kernel!(@parse [$(#[$doc])* $desc $entry [$threads] [$($sg)?] ($params) $body
             [#[spirv(workgroup)] shared: &mut [u32; $n],] [shared,] [&mut [0u32; $n],] ($n)] [] $($bind)*);
     };
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($bind:tt)* } => $body:ident) => {
-        $crate::kernel!(@parse [$(#[$doc])* $desc $entry [$threads] ($params) $body [] [] [] (0)] [] $($bind)*);
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt $($sg:ident)?] ($params:ty) { $($bind:tt)* } => $body:ident) => {
+        $crate::kernel!(@parse [$(#[$doc])* $desc $entry [$threads] [$($sg)?] ($params) $body [] [] [] (0)] [] $($bind)*);
     };
 
     // Reads the binding list into `[mode name]` pairs (`read`, `write`, `texture`, `depth_texture`).
@@ -169,59 +178,59 @@ macro_rules! kernel {
     (@parse [$($decl:tt)*] [$($acc:tt)*] $b:ident $(, $($rest:tt)*)?) => {
         $crate::kernel!(@parse [$($decl)*] [$($acc)* [write $b]] $($($rest)*)?);
     };
-    (@parse [$(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*]
+    (@parse [$(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] [$($sg:ident)?] ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*]
         [$($cpu_sh:tt)*] ($n:expr)] [$([$mode:ident $buf:ident])*]) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*] [] [] [0 1 2 3 4 5 6 7 8 9 10 11]
+        $crate::kernel!(@gpu [$threads $($sg)?] $entry ($params) $body [$($sh)*] [$($sh_arg)*] [] [] [0 1 2 3 4 5 6 7 8 9 10 11]
             $([$mode $buf])*);
-        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [$($cpu_sh)*] $([$mode $buf])*);
+        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] [$($sg)?] ($params) ($n) $body [$($cpu_sh)*] $([$mode $buf])*);
     };
 
     // Accumulates one entry-point parameter per binding, numbered in order (`#[spirv(storage_buffer)]`
     // `&[u32]` for a `read` binding, `&mut [u32]` for a written one, a sampled image for a texture),
     // and the argument the body gets for it.
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+    (@gpu [$threads:tt $($sg:ident)?] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [read $b:ident] $($rest:tt)*) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+        $crate::kernel!(@gpu [$threads $($sg)?] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &[u32],]
             [$($arg)* $crate::exec::GpuRead($b),]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+    (@gpu [$threads:tt $($sg:ident)?] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [write $b:ident] $($rest:tt)*) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+        $crate::kernel!(@gpu [$threads $($sg)?] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &mut [u32],]
             [$($arg)* $crate::exec::GpuMem($b),]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+    (@gpu [$threads:tt $($sg:ident)?] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [texture $b:ident] $($rest:tt)*) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+        $crate::kernel!(@gpu [$threads $($sg)?] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::ColorImage,]
             [$($arg)* $b,]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+    (@gpu [$threads:tt $($sg:ident)?] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [depth_texture $b:ident] $($rest:tt)*) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+        $crate::kernel!(@gpu [$threads $($sg)?] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::DepthImage,]
             [$($arg)* $b,]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+    (@gpu [$threads:tt $($sg:ident)?] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [rgba32f_image $b:ident] $($rest:tt)*) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+        $crate::kernel!(@gpu [$threads $($sg)?] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::Rgba32fImage,]
             [$($arg)* $b,]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+    (@gpu [$threads:tt $($sg:ident)?] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [rgba16f_image $b:ident] $($rest:tt)*) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+        $crate::kernel!(@gpu [$threads $($sg)?] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::Rgba16fImage,]
             [$($arg)* $b,]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+    (@gpu [$threads:tt $($sg:ident)?] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$($ns:tt)*]) => {
         #[cfg(target_arch = "spirv")]
         #[spirv_std::spirv(compute(threads($threads)))]
@@ -242,6 +251,51 @@ macro_rules! kernel {
             };
             $body(&mut group, params, $($sh_arg)* $($arg)*)
         }
+        $crate::kernel!(@gpu_subgroups [$($sg)?] [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*] [$($acc)*] [$($arg)*]);
+    };
+
+    // A kernel marked `subgroups` has a second entry point, `<entry>::subgroups`, whose group runs
+    // the workgroup scans and reductions in subgroups.
+    (@gpu_subgroups [] $($rest:tt)*) => {};
+    (@gpu_subgroups [subgroups] [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+        [$($arg:tt)*]) => {
+        #[cfg(target_arch = "spirv")]
+        pub mod $entry {
+            #[allow(unused_imports)]
+            use super::*;
+            #[spirv_std::spirv(compute(threads($threads)))]
+            #[allow(clippy::too_many_arguments)]
+            pub fn subgroups(
+                #[spirv(local_invocation_index)] local_index: u32,
+                #[spirv(workgroup_id)] workgroup_id: spirv_std::glam::UVec3,
+                #[spirv(num_workgroups)] num_workgroups: spirv_std::glam::UVec3,
+                #[spirv(subgroup_size)] subgroup_size: u32,
+                #[spirv(num_subgroups)] num_subgroups: u32,
+                #[spirv(subgroup_id)] subgroup_id: u32,
+                #[spirv(subgroup_local_invocation_id)] lane: u32,
+                #[spirv(push_constant)] params: &$params,
+                $($sh)*
+                $($acc)*
+            ) {
+                let mut group = $crate::exec::GpuSubgroupGroup {
+                    group: $crate::exec::GpuGroup {
+                        size: $threads,
+                        local_index,
+                        workgroup_id: workgroup_id.to_array(),
+                        num_workgroups: num_workgroups.to_array(),
+                    },
+                    subgroup_size,
+                    num_subgroups,
+                    subgroup_id,
+                    lane,
+                };
+                $body(&mut group, params, $($sh_arg)* $($arg)*)
+            }
+        }
+    };
+    (@subgroup_entry [] $entry:ident) => { None };
+    (@subgroup_entry [subgroups] $entry:ident) => {
+        Some($crate::kernel::entry_name(concat!(module_path!(), "::", stringify!($entry), "::subgroups")))
     };
 
     (@is_read read) => { true };
@@ -266,7 +320,7 @@ macro_rules! kernel {
     (@cpu_bind rgba16f_image $d:ident $b:ident) => { $d.texels_mut($b) };
     (@cpu_bind $mode:ident $d:ident $b:ident) => { $d.mem($b) };
 
-    (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:ident
+    (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] [$($sg:ident)?] ($params:ty) ($n:expr) $body:ident
         [$($sh_arg:tt)*] $([$mode:ident $buf:ident])*) => {
         /// The bindings of the kernel of this name, by name (see [`kernel!`](crate::kernel!)).
         #[cfg(not(target_arch = "spirv"))]
@@ -299,6 +353,7 @@ macro_rules! kernel {
             }
             $crate::kernel::KernelDesc {
                 entry: $crate::kernel::entry_name(concat!(module_path!(), "::", stringify!($entry))),
+                subgroup_entry: $crate::kernel!(@subgroup_entry [$($sg)?] $entry),
                 workgroup_size: $threads,
                 bindings: [$(stringify!($buf)),*].len() as u32,
                 read_only: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_read $mode)),*]),

@@ -4,7 +4,7 @@
 //! modulo 2^32 on both backends.
 
 use crate::exec::{Group, Load, Mem};
-use crate::wg::{add, inclusive_scan};
+use crate::wg::{Add, inclusive_scan};
 
 pub const THREADS: u32 = 256;
 pub const ITEMS: u32 = 4;
@@ -45,7 +45,7 @@ pub fn block_pass<G: Group, M: Mem>(g: &mut G, p: &ScanParams, sh: &mut [u32; 2 
             }
             sh[lid as usize] = total;
         });
-        let src = inclusive_scan(g, sh, 0, add);
+        let src = inclusive_scan(g, sh, 0, Add);
         g.each(|lid| {
             let inclusive = sh[src + lid as usize];
             let mut running = if lid == 0 { 0 } else { sh[src + lid as usize - 1] };
@@ -91,7 +91,7 @@ pub fn add_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &ScanParams, mut data: 
 
 kernel!(
     /// Exclusive scan within blocks of `BLOCK` words; block totals to `sums`.
-    BLOCK_SCAN = scan_block [256] (ScanParams) shared [u32; 2 * 256] { data, sums } => block_pass
+    BLOCK_SCAN = scan_block [256 subgroups] (ScanParams) shared [u32; 2 * 256] { data, sums } => block_pass
 );
 kernel!(
     /// Adds each block's scanned offset to its words.

@@ -271,7 +271,7 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     })
     .expect("allocator");
     let shared = Arc::new(Mutex::new(allocator));
-    let opts = RawOptions { debug_names: true, allocator: Some(shared.clone()) };
+    let opts = RawOptions { debug_names: true, allocator: Some(shared.clone()), ..Default::default() };
     // SAFETY: as in the test above; the allocator was made for this device.
     let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &opts) }.expect("from_raw");
     drop(opts);

@@ -4,7 +4,7 @@
 //! languages wgpu hands to drivers. Also the WGSL peel test renderers copy from the docs.
 
 use dof::shaders::{MODULES, SOURCE_HASH};
-use naga::valid::{Capabilities, ValidationFlags, Validator};
+use naga::valid::{Capabilities, ShaderStages, SubgroupOperationSet, ValidationFlags, Validator};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -40,6 +40,18 @@ fn capabilities() -> Capabilities {
     Capabilities::IMMEDIATES
 }
 
+/// The validator of a kernel's module: a subgroup variant's (`::subgroups`) also has what
+/// [`wgpu::Features::SUBGROUP`] gives compute shaders, the others nothing of it.
+fn validator(entry: &str) -> Validator {
+    if !entry.ends_with("::subgroups") {
+        return Validator::new(ValidationFlags::all(), capabilities());
+    }
+    let mut v = Validator::new(ValidationFlags::all(), capabilities() | Capabilities::SUBGROUP);
+    v.subgroup_stages(ShaderStages::COMPUTE)
+        .subgroup_operations(SubgroupOperationSet::BASIC | SubgroupOperationSet::ARITHMETIC | SubgroupOperationSet::SHUFFLE_RELATIVE);
+    v
+}
+
 #[test]
 fn every_kernel_translates_to_msl_hlsl_and_spirv() {
     let (_, modules) = manifest();
@@ -52,7 +64,7 @@ fn every_kernel_translates_to_msl_hlsl_and_spirv() {
                 continue;
             }
         };
-        let info = match Validator::new(ValidationFlags::all(), capabilities()).validate(&module) {
+        let info = match validator(entry).validate(&module) {
             Ok(info) => info,
             Err(e) => {
                 failures.push(format!("{entry}: validation: {:?}", e.into_inner()));
@@ -64,13 +76,23 @@ fn every_kernel_translates_to_msl_hlsl_and_spirv() {
         let short = entry.rsplit("::").next().unwrap_or(entry);
         assert!(matches!(module.entry_points.as_slice(), [only] if only.name.trim_end_matches('_') == short), "{entry}: its entry point");
 
-        // Metal Shading Language 2.0 (macOS 10.13, iOS 11): naga's default, 1.0, has no instance index.
-        let msl = naga::back::msl::Options { lang_version: (2, 0), fake_missing_bindings: true, ..Default::default() };
+        // Metal Shading Language 2.0 (macOS 10.13, iOS 11): naga's default, 1.0, has no instance
+        // index. Subgroup variants: 2.1 (SIMD-group functions), as wgpu asks for them.
+        let subgroups = entry.ends_with("::subgroups");
+        let lang_version = if subgroups { (2, 1) } else { (2, 0) };
+        let msl = naga::back::msl::Options { lang_version, fake_missing_bindings: true, ..Default::default() };
         if let Err(e) = naga::back::msl::write_string(&module, &info, &msl, &naga::back::msl::PipelineOptions::default()) {
             failures.push(format!("{entry}: MSL: {e}"));
         }
         let immediates = naga::back::hlsl::BindTarget { space: 0, register: 0, ..Default::default() };
-        let hlsl = naga::back::hlsl::Options { immediates_target: Some(immediates), fake_missing_bindings: true, ..Default::default() };
+        // Subgroup variants: shader model 6.0 (wave intrinsics), as wgpu asks for them.
+        let shader_model = if subgroups { naga::back::hlsl::ShaderModel::V6_0 } else { naga::back::hlsl::ShaderModel::V5_1 };
+        let hlsl = naga::back::hlsl::Options {
+            immediates_target: Some(immediates),
+            fake_missing_bindings: true,
+            shader_model,
+            ..Default::default()
+        };
         let mut text = String::new();
         if let Err(e) = naga::back::hlsl::Writer::new(&mut text, &hlsl, &Default::default()).write(&module, &info, None) {
             failures.push(format!("{entry}: HLSL: {e}"));

@@ -36,6 +36,12 @@ pub fn translate(entry: &str, spirv: &[u8]) -> Result<String, String> {
     };
     only.name = entry.rsplit("::").next().unwrap_or(entry).to_string();
     let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
+        .subgroup_stages(naga::valid::ShaderStages::COMPUTE)
+        .subgroup_operations(
+            naga::valid::SubgroupOperationSet::BASIC
+                | naga::valid::SubgroupOperationSet::ARITHMETIC
+                | naga::valid::SubgroupOperationSet::SHUFFLE_RELATIVE,
+        )
         .validate(&ir)
         .map_err(|e| format!("{entry}: naga's validation fails: {:?}", e.into_inner()))?;
     naga::back::wgsl::write_string(&ir, &info, naga::back::wgsl::WriterFlags::empty())

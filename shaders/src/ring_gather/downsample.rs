@@ -326,9 +326,9 @@ pub fn downsample_pass<G: Group, R: Load, M: Mem>(
         sh[128 + lid as usize] = near.to_bits();
         sh[256 + lid as usize] = reach.to_bits();
     });
-    let slots = crate::wg::inclusive_scan(g, sh, 0, crate::wg::add);
-    let m = crate::wg::inclusive_scan(g, sh, 128, crate::wg::max);
-    let widest = crate::wg::inclusive_scan(g, sh, 256, crate::wg::max);
+    let slots = crate::wg::inclusive_scan(g, sh, 0, crate::wg::Add);
+    let m = crate::wg::inclusive_scan(g, sh, 128, crate::wg::Max);
+    let widest = crate::wg::inclusive_scan(g, sh, 256, crate::wg::Max);
     let record = BRIGHT_TILE_WORDS * (ty * p.tiles_x() + tx);
     g.each(|lid| {
         let slot = sh[slots + lid as usize];

@@ -276,7 +276,7 @@ pub use gather::{gather_pass, lattice};
 
 kernel!(
     /// Half-resolution colour and signed CoC, each tile's largest near-field radius and its highlights, taken out of the full-resolution colours.
-    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64] (RingGatherParams) shared [u32; 6 * 64]
+    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64 subgroups] (RingGatherParams) shared [u32; 6 * 64]
         { read color, read depth, half, tiles, bright, fine, stats } => downsample_pass
 );
 kernel!(

@@ -38,7 +38,7 @@ use crate::exec::{Group, Load, Mem};
 use crate::footprint;
 use crate::lane::{LaneMask, Lanes};
 use crate::lens::is_nan;
-use crate::wg::{max, reduce};
+use crate::wg::{Max, reduce};
 
 /// Coverage short of full at which a pixel stops.
 pub const SATURATED: f32 = 1.0 / 1024.0;
@@ -208,7 +208,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         }
         sh[ACTIVE + lid as usize] = end;
     });
-    let translucent_end = reduce(g, sh, ACTIVE, max);
+    let translucent_end = reduce(g, sh, ACTIVE, Max);
     g.each(|lid| {
         let mut f = ACC_R;
         while f <= VISITED {
@@ -345,7 +345,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                 l += 1;
             }
         });
-        active = reduce(g, sh, ACTIVE, max);
+        active = reduce(g, sh, ACTIVE, Max);
         start += THREADS;
     }
     g.each(|lid| {
@@ -388,6 +388,6 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
 
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
-    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 23 * 256]
+    ACCUMULATE = splat_accumulate [256 subgroups] (SplatParams) shared [u32; 23 * 256]
         { read sharp, read dense, read values, read segments, read copy, out, st, read mask } => accumulate_pass
 );

@@ -26,7 +26,7 @@ use super::fragment::Fragment;
 use super::planned;
 use super::{FLAG_SERIAL, SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
-use crate::wg::{add, for_each_item, inclusive_scan, max, reduce, segmented_scans};
+use crate::wg::{Add, Max, for_each_item, inclusive_scan, reduce, segmented_scans};
 
 /// Tiles one workgroup of `splat_tile_count` counts: one cell an invocation, so as many tiles as
 /// its invocations hold (16 of 4x4-merged 16-px tiles), or one tile where a tile has more cells
@@ -196,7 +196,7 @@ pub fn tile_count_pass<G: Group, R: Load, M: Mem>(
             sh[segs + lid as usize] = slot;
             sh[own + lid as usize] = total;
         });
-        let (sums, widest) = segmented_scans(g, sh, (counts, radii, segs), add, max);
+        let (sums, widest) = segmented_scans(g, sh, (counts, radii, segs), Add, Max);
         g.each(|lid| {
             let (slot, t, first) = place(first_tile, lid);
             if slot >= group_tiles || t >= tiles {
@@ -329,7 +329,7 @@ fn candidate_space<G: Group, const N: usize>(
         sh[NB_SCAN + lid as usize] = n;
         sh[NB_TILE + lid as usize] = from;
     });
-    let nb = inclusive_scan(g, sh, NB_SCAN, add);
+    let nb = inclusive_scan(g, sh, NB_SCAN, Add);
     (nb, sh[nb + THREADS as usize - 1])
 }
 
@@ -388,8 +388,8 @@ pub fn bin_count_pass<G: Group, R: Load, M: Mem>(
         let i = lid as usize;
         (sh[a + i], sh[b + i], sh[c + i], sh[d + i], sh[e + i]) = (k0, k1, k2, k3, k4);
     });
-    let (n0, n1, n2) = (reduce(g, sh, a, add), reduce(g, sh, b, add), reduce(g, sh, c, add));
-    let (n3, n4) = (reduce(g, sh, d, add), reduce(g, sh, e, add));
+    let (n0, n1, n2) = (reduce(g, sh, a, Add), reduce(g, sh, b, Add), reduce(g, sh, c, Add));
+    let (n3, n4) = (reduce(g, sh, d, Add), reduce(g, sh, e, Add));
     g.each(|lid| {
         if lid == 0 {
             let at = t * LEVELS;
@@ -449,13 +449,13 @@ pub fn bin_plan_pass<G: Group, R: Load, M: Mem>(
     // The largest cap whose lists fit the pool: a binary search (the total grows with the cap).
     let (mut lo, mut hi) = (0u32, p.max_list);
     g.each(|lid| sh[lid as usize] = cap_total(hi, lid));
-    if reduce(g, sh, 0, add) <= p.list_capacity {
+    if reduce(g, sh, 0, Add) <= p.list_capacity {
         lo = hi;
     }
     while lo < hi {
         let mid = lo + (hi - lo).div_ceil(2);
         g.each(|lid| sh[lid as usize] = cap_total(mid, lid));
-        if reduce(g, sh, 0, add) <= p.list_capacity {
+        if reduce(g, sh, 0, Add) <= p.list_capacity {
             lo = mid;
         } else {
             hi = mid - 1;
@@ -463,7 +463,7 @@ pub fn bin_plan_pass<G: Group, R: Load, M: Mem>(
     }
     let cap = lo;
     g.each(|lid| sh[lid as usize] = cap_total(cap, lid));
-    let sums = inclusive_scan(g, sh, 0, add);
+    let sums = inclusive_scan(g, sh, 0, Add);
     g.each(|lid| {
         let mut at = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
         let (mut thinned, mut left_out, mut sharp, mut sharp_entries, mut longest) = (0u32, 0u32, 0u32, 0u32, 0u32);
@@ -567,7 +567,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
             sh[SCAN + lid as usize] = mask.count_ones();
             sh[MASKS + lid as usize] = mask;
         });
-        let sums = inclusive_scan(g, sh, SCAN, add);
+        let sums = inclusive_scan(g, sh, SCAN, Add);
         let mut chunk_total = 0;
         g.each(|lid| {
             let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
@@ -778,17 +778,17 @@ kernel!(
 );
 kernel!(
     /// Each tile's list length at every thinning level, and the count's cached test results.
-    BIN_COUNT = splat_bin_count [256] (SplatParams) shared [u32; 7 * 256]
+    BIN_COUNT = splat_bin_count [256 subgroups] (SplatParams) shared [u32; 7 * 256]
         { read dense, read tile_count, read offsets, read tile_radius, read copy, thin_counts, cache, read st } => bin_count_pass
 );
 kernel!(
     /// One workgroup: each tile's thinning level and place in the list pool.
-    BIN_PLAN = splat_bin_plan [256] (SplatParams) shared [u32; 2 * 256]
+    BIN_PLAN = splat_bin_plan [256 subgroups] (SplatParams) shared [u32; 2 * 256]
         { read thin_counts, copy, segments, st } => bin_plan_pass
 );
 kernel!(
     /// The tile lists: depth keys and dense fragment indices.
-    BIN = splat_bin [256] (SplatParams) shared [u32; 7 * 256]
+    BIN = splat_bin [256 subgroups] (SplatParams) shared [u32; 7 * 256]
         { read dense, read tile_count, read offsets, read tile_radius, read copy, read segments, read cache, keys, values, read st }
         => bin_pass
 );

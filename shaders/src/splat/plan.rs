@@ -14,7 +14,7 @@ use super::pack::{input_slot, is_valid};
 use super::{MAX_RINGS, SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
 use crate::slot::clamp_alpha;
-use crate::wg::{max, reduce};
+use crate::wg::{Max, reduce};
 
 /// Rings and radius cap for the widest radius present: fragments merged into cells of `cell` pixels
 /// reach half a cell beyond their CoC, and `cap` (the configured cap, at most `MAX_RINGS` tiles)
@@ -74,7 +74,7 @@ pub fn reduce_pass<G: Group, R: Load, M: Mem>(
         }
         sh[lid as usize] = widest.to_bits();
     });
-    let w = reduce(g, sh, 0, max);
+    let w = reduce(g, sh, 0, Max);
     g.each(|lid| {
         if lid == 0 {
             st.atomic_max(stats::WIDEST, w);
@@ -99,7 +99,7 @@ pub fn finish_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, mut st: M) {
 
 kernel!(
     /// The largest CoC radius of the input, into the frame words.
-    PLAN_REDUCE = splat_plan_reduce [256] (SplatParams) shared [u32; 2 * 256] { read layers, read counts, st } => reduce_pass
+    PLAN_REDUCE = splat_plan_reduce [256 subgroups] (SplatParams) shared [u32; 2 * 256] { read layers, read counts, st } => reduce_pass
 );
 kernel!(
     /// Rings and radius cap from the reduction.

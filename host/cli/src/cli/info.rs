@@ -28,7 +28,7 @@ pub fn run(args: &InfoArgs) -> anyhow::Result<()> {
         Ok(devices) => {
             for d in devices {
                 println!(
-                    "vulkan device {}: {} ({}), Vulkan {}, driver {}\n  shared memory {} B, workgroup {} invocations, groups {:?}, subgroup {:?}, max buffer {} MiB, timestamp period {} ns",
+                    "vulkan device {}: {} ({}), Vulkan {}, driver {}\n  shared memory {} B, workgroup {} invocations, groups {:?}, subgroup {:?} ({}), max buffer {} MiB, timestamp period {} ns",
                     d.index,
                     d.name,
                     d.device_type,
@@ -38,6 +38,7 @@ pub fn run(args: &InfoArgs) -> anyhow::Result<()> {
                     d.limits.max_workgroup_invocations,
                     d.limits.max_workgroup_count,
                     d.limits.subgroup_size,
+                    if d.limits.subgroup_kernels { "kernels scan in subgroups" } else { "no subgroup arithmetic: kernels scan without" },
                     d.limits.max_buffer_bytes >> 20,
                     d.timestamp_period_ns
                 );

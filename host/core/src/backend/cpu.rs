@@ -19,6 +19,10 @@ use std::time::Instant;
 /// backends take the same sort paths; tests lower it to exercise the global-memory path.
 pub const DEFAULT_SHARED_BYTES: u32 = 32 * 1024;
 
+/// The subgroups the CPU backend runs the kernels' subgroup variants in: NVIDIA's width, so every
+/// CPU run takes the subgroup scans' path of most GPUs (`CpuBackend::set_subgroup_size` changes it).
+pub const DEFAULT_SUBGROUP_SIZE: u32 = 32;
+
 pub struct CpuBackend {
     id: BackendId,
     limits: Limits,
@@ -64,7 +68,8 @@ impl CpuBackend {
                 max_shared_bytes: shared_bytes,
                 max_workgroup_invocations: 1024,
                 max_workgroup_count: [65535; 3],
-                subgroup_size: None,
+                subgroup_size: Some(DEFAULT_SUBGROUP_SIZE),
+                subgroup_kernels: true,
                 max_buffer_bytes: 1 << 34,
                 serial_invocations: true,
             },
@@ -79,6 +84,24 @@ impl CpuBackend {
             images: Vec::new(),
             retire: RetireQueue::default(),
         }
+    }
+
+    /// Runs the kernels' subgroup variants in subgroups of `size` (a power of two from 2 to
+    /// [`dof_shaders::exec::CpuGroup::MAX_SUBGROUP`]; a workgroup narrower than that is one
+    /// subgroup), or, with `None`, runs the variants without subgroups, as a device without
+    /// subgroup arithmetic does. The results are the same bits either way.
+    pub fn set_subgroup_size(&mut self, size: Option<u32>) -> Result<()> {
+        if let Some(s) = size
+            && !(s.is_power_of_two() && (2..=dof_shaders::exec::CpuGroup::MAX_SUBGROUP).contains(&s))
+        {
+            return Err(Error::InvalidArgument(format!(
+                "a subgroup size of {s}: the CPU backend emulates powers of two from 2 to {}",
+                dof_shaders::exec::CpuGroup::MAX_SUBGROUP
+            )));
+        }
+        self.limits.subgroup_size = size;
+        self.limits.subgroup_kernels = size.is_some();
+        Ok(())
     }
 
     /// Every texel of a stand-in image.
@@ -166,6 +189,7 @@ impl CpuBackend {
             bound.push(&img.texels);
         }
         let total = groups[0] as u64 * groups[1] as u64 * groups[2] as u64;
+        let subgroup_size = self.limits.subgroup_size.filter(|_| kernel.subgroup_entry.is_some());
         let result = catch_unwind(AssertUnwindSafe(|| {
             (0..total).into_par_iter().for_each(|flat| {
                 let x = (flat % groups[0] as u64) as u32;
@@ -178,6 +202,7 @@ impl CpuBackend {
                     push,
                     read_only: kernel.read_only,
                     image_layouts: &image_layouts,
+                    subgroup_size,
                 });
             })
         }));

@@ -36,6 +36,7 @@ pub use image::ImageDesc;
 pub(crate) use image::format_names;
 pub use image::{ImageFormat, ImageRef};
 pub use retire::RetireQueue;
+
 pub use run::RunKernel;
 #[cfg(feature = "vulkan")]
 pub use vulkan::{DRAWS_ENV, DrawPath, External, PipelineStatistic, RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
@@ -70,11 +71,53 @@ pub struct Limits {
     pub max_workgroup_count: [u32; 3],
     /// Subgroup size, where the device reports one.
     pub subgroup_size: Option<u32>,
+    /// The backend runs a kernel's subgroup variant (`KernelDesc::subgroup_entry`) where it has one:
+    /// the device has subgroup arithmetic in compute (the CPU backend emulates subgroups of
+    /// `subgroup_size`).
+    pub subgroup_kernels: bool,
     /// Largest single buffer in bytes (`maxStorageBufferRange`, bounded by the heap).
     pub max_buffer_bytes: u64,
     /// A workgroup's invocations run one after another (the CPU backend), so a kernel may choose
     /// work-efficient serial code over a parallel network (the segmented sort does).
     pub serial_invocations: bool,
+}
+
+/// Whether a GPU backend runs the kernels' subgroup variants (`KernelDesc::subgroup_entry`): the
+/// same results with fewer barriers, on devices with subgroup arithmetic in compute.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Subgroups {
+    /// `DOF_SUBGROUPS` if set (`on` or `off`), else wherever the device has subgroup arithmetic.
+    #[default]
+    Auto,
+    /// Always; refused on a device without subgroup arithmetic.
+    Required,
+    /// Never: every kernel runs without subgroup operations.
+    Off,
+}
+
+/// Environment variable choosing [`Subgroups`] when the options say `Auto`.
+pub const SUBGROUPS_ENV: &str = "DOF_SUBGROUPS";
+
+impl Subgroups {
+    /// Whether to run the subgroup variants on a device that has (`device_has`) or lacks
+    /// subgroup arithmetic.
+    pub fn resolve(self, device_has: bool) -> Result<bool> {
+        let choice = match self {
+            Subgroups::Auto => match std::env::var(SUBGROUPS_ENV).ok().as_deref().map(str::trim) {
+                None | Some("") => return Ok(device_has),
+                Some(v) if v.eq_ignore_ascii_case("on") => Subgroups::Required,
+                Some(v) if v.eq_ignore_ascii_case("off") => Subgroups::Off,
+                Some(v) => return Err(Error::InvalidArgument(format!("{SUBGROUPS_ENV}={v}: give `on` or `off` (or unset it)"))),
+            },
+            other => other,
+        };
+        match choice {
+            Subgroups::Required if !device_has => {
+                Err(Error::InvalidArgument("subgroups required, but the device has no subgroup arithmetic in compute shaders".into()))
+            }
+            choice => Ok(choice == Subgroups::Required),
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -364,7 +364,7 @@ impl App<'_> {
         };
         // SAFETY: the handles are live and outlive the backend (dropped in `finish` first); the
         // device was made with the required version, extensions and features; one thread.
-        let backend = unsafe { VulkanBackend::from_raw(raw, &RawOptions { debug_names: self.args.validation, allocator: None })? };
+        let backend = unsafe { VulkanBackend::from_raw(raw, &RawOptions { debug_names: self.args.validation, ..Default::default() })? };
         // The size against what the device holds, before anything is made for it.
         let flags = match self.source.fixed_size() {
             Some([w, h]) => format!("--scene {} ({w}x{h} pixels, shown at its own size)", self.args.scene),

@@ -269,6 +269,11 @@ pub(super) fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: 
             max_workgroup_invocations: props.limits.max_compute_work_group_invocations,
             max_workgroup_count: props.limits.max_compute_work_group_count,
             subgroup_size: (subgroup.subgroup_size > 0).then_some(subgroup.subgroup_size),
+            subgroup_kernels: at_least(1)
+                && subgroup.supported_stages.contains(vk::ShaderStageFlags::COMPUTE)
+                && subgroup.supported_operations.contains(
+                    vk::SubgroupFeatureFlags::BASIC | vk::SubgroupFeatureFlags::ARITHMETIC | vk::SubgroupFeatureFlags::SHUFFLE_RELATIVE,
+                ),
             max_buffer_bytes,
             serial_invocations: false,
         };

@@ -28,8 +28,8 @@ mod spirv;
 
 use super::access::{Access, Resource, copy_accesses, dispatch_accesses, draw_accesses};
 use super::{
-    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, RetireQueue, check_dispatch,
-    check_draw, check_images, draw_fallback,
+    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, RetireQueue, Subgroups,
+    check_dispatch, check_draw, check_images, draw_fallback,
 };
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
@@ -65,6 +65,8 @@ pub struct VulkanOptions {
     /// How draws (the device peel's rasterisation) run. `Auto` consults `DOF_VULKAN_DRAWS`
     /// (`graphics` or `compute`), then takes the graphics pipeline where the queue has it.
     pub draws: DrawPath,
+    /// Whether kernels run their subgroup variants (see [`Subgroups`]).
+    pub subgroups: Subgroups,
 }
 
 /// How a backend runs draws ([`Backend::draw_indirect`]).
@@ -158,6 +160,8 @@ pub struct RawOptions {
     /// The caller's gpu-allocator to allocate the backend's buffers from (made for the same device);
     /// `None` makes the backend its own, dropped with the backend.
     pub allocator: Option<SharedAllocator>,
+    /// Whether kernels run their subgroup variants (see [`Subgroups`]).
+    pub subgroups: Subgroups,
 }
 
 /// The device features the kernels need, as the structs to chain into `VkDeviceCreateInfo`
@@ -251,6 +255,7 @@ impl VulkanBackend {
             candidate.info,
             candidate.physical,
             candidate.timestamp_bits,
+            opts.subgroups,
         )?;
         backend.graphics_draws = graphics && draws != DrawPath::Compute;
         Ok(backend)
@@ -325,25 +330,28 @@ impl VulkanBackend {
                 .map_err(|e| Error::Allocation(e.to_string()))?,
             )),
         };
-        Self::assemble(device, instance, allocator, candidate.info, physical_device, family.timestamp_valid_bits)
+        Self::assemble(device, instance, allocator, candidate.info, physical_device, family.timestamp_valid_bits, opts.subgroups)
     }
 
     fn assemble(
         device: DeviceCtx,
         instance: InstanceCtx,
         allocator: SharedAllocator,
-        info: DeviceInfo,
+        mut info: DeviceInfo,
         physical: vk::PhysicalDevice,
         timestamp_bits: u32,
+        subgroups: Subgroups,
     ) -> Result<Self> {
         let capture_statistics = device.executable_properties.is_some();
+        info.limits.subgroup_kernels = subgroups.resolve(info.limits.subgroup_kernels)?;
+        let pipelines = Pipelines::new(capture_statistics, info.limits.subgroup_kernels);
         // From here on `Drop` cleans up whatever a failing step leaves behind.
         let mut backend = VulkanBackend {
             device,
             instance,
             allocator: Some(allocator),
             info,
-            pipelines: Pipelines::new(capture_statistics),
+            pipelines,
             draws: draw::Draws::default(),
             physical,
             recorder: Recorder::empty(),

@@ -21,14 +21,16 @@ pub(super) struct Pipelines {
     by_entry: HashMap<&'static str, Pipeline>,
     /// Create pipelines with CAPTURE_STATISTICS_KHR (the device enabled pipeline statistics).
     capture_statistics: bool,
+    /// Create a kernel's pipeline from its subgroup variant where it has one.
+    subgroups: bool,
     /// The caller's modules (`VulkanBackend::add_modules`): entry -> (words, the entry point's name
     /// inside the module). No entry here is one of the project's.
     added: HashMap<String, (Vec<u32>, String)>,
 }
 
 impl Pipelines {
-    pub fn new(capture_statistics: bool) -> Self {
-        Pipelines { by_entry: HashMap::new(), capture_statistics, added: HashMap::new() }
+    pub fn new(capture_statistics: bool, subgroups: bool) -> Self {
+        Pipelines { by_entry: HashMap::new(), capture_statistics, subgroups, added: HashMap::new() }
     }
 
     /// Adds a caller's modules, all or none: every entry must be new (neither the project's nor
@@ -79,10 +81,10 @@ impl Pipelines {
         if let Some(p) = self.by_entry.get(kernel.entry) {
             return Ok(*p);
         }
-        let (words, name) = self.module(kernel.entry).ok_or_else(|| {
+        let entry = kernel.subgroup_entry.filter(|_| self.subgroups).unwrap_or(kernel.entry);
+        let (words, name) = self.module(entry).ok_or_else(|| {
             Error::InvalidArgument(format!(
-                "no SPIR-V module holds the entry point `{}` (a kernel of your own needs `VulkanBackend::add_modules`)",
-                kernel.entry
+                "no SPIR-V module holds the entry point `{entry}` (a kernel of your own needs `VulkanBackend::add_modules`)"
             ))
         })?;
         let p = create(device, kernel, &words, &name, self.capture_statistics)?;

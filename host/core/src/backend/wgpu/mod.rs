@@ -20,7 +20,8 @@
 //! those messages and fails the next `submit`, `read_buffer` or `write_buffer` with them.
 
 use super::{
-    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, RetireQueue, check_dispatch, check_images,
+    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, RetireQueue, Subgroups, check_dispatch,
+    check_images,
 };
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
@@ -41,6 +42,9 @@ pub struct WgpuOptions {
     /// Metal, DX12; GL only when named).
     pub backends: wgpu::Backends,
     pub power_preference: wgpu::PowerPreference,
+    /// Whether kernels run their subgroup variants ([`Subgroups`]); `new` asks for
+    /// [`wgpu::Features::SUBGROUP`] when they do.
+    pub subgroups: Subgroups,
 }
 
 impl Default for WgpuOptions {
@@ -48,6 +52,7 @@ impl Default for WgpuOptions {
         WgpuOptions {
             backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::PRIMARY),
             power_preference: wgpu::PowerPreference::HighPerformance,
+            subgroups: Subgroups::Auto,
         }
     }
 }
@@ -124,9 +129,12 @@ impl WgpuBackend {
                 info.name, info.backend
             )));
         }
+        let subgroups = options.subgroups.resolve(adapter.features().contains(wgpu::Features::SUBGROUP))?;
         let descriptor = wgpu::DeviceDescriptor {
             label: Some("dof"),
-            required_features: wgpu::Features::IMMEDIATES | (adapter.features() & wgpu::Features::TIMESTAMP_QUERY),
+            required_features: wgpu::Features::IMMEDIATES
+                | (adapter.features() & wgpu::Features::TIMESTAMP_QUERY)
+                | if subgroups { wgpu::Features::SUBGROUP } else { wgpu::Features::empty() },
             required_limits: adapter.limits(),
             ..Default::default()
         };
@@ -140,6 +148,8 @@ impl WgpuBackend {
     /// A backend on a device the caller made (with [`wgpu::Features::IMMEDIATES`]); `info` is its
     /// adapter's. Frames on it are recorded into the caller's encoder ([`WgpuBackend::record_into`]).
     /// The backend's own submissions are timed where the device has [`wgpu::Features::TIMESTAMP_QUERY`].
+    /// Kernels run their subgroup variants where the device has [`wgpu::Features::SUBGROUP`]
+    /// ([`WgpuBackend::set_subgroups`] turns them off).
     pub fn from_device(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Self {
         let errors = Arc::new(Mutex::new(Vec::new()));
         let sink = errors.clone();
@@ -154,6 +164,7 @@ impl WgpuBackend {
             max_workgroup_invocations: l.max_compute_invocations_per_workgroup,
             max_workgroup_count: [l.max_compute_workgroups_per_dimension; 3],
             subgroup_size: (info.subgroup_min_size == info.subgroup_max_size).then_some(info.subgroup_min_size),
+            subgroup_kernels: device.features().contains(wgpu::Features::SUBGROUP),
             max_buffer_bytes: l.max_buffer_size.min(l.max_storage_buffer_binding_size),
             serial_invocations: false,
         };
@@ -185,6 +196,17 @@ impl WgpuBackend {
 
     pub fn device(&self) -> &wgpu::Device {
         &self.device
+    }
+
+    /// Whether kernels run their subgroup variants, on this device (`Required` is refused on a
+    /// device without [`wgpu::Features::SUBGROUP`]). Pipelines made before are made again.
+    pub fn set_subgroups(&mut self, subgroups: Subgroups) -> Result<()> {
+        let on = subgroups.resolve(self.device.features().contains(wgpu::Features::SUBGROUP))?;
+        if on != self.limits.subgroup_kernels {
+            self.limits.subgroup_kernels = on;
+            self.pipelines.clear();
+        }
+        Ok(())
     }
 
     pub fn queue(&self) -> &wgpu::Queue {
@@ -275,7 +297,8 @@ impl WgpuBackend {
                 }
             })
             .collect();
-        self.compute_pipeline(kernel.entry, &entries, kernel.push_bytes)
+        let entry = kernel.subgroup_entry.filter(|_| self.limits.subgroup_kernels).unwrap_or(kernel.entry);
+        self.compute_pipeline(entry, &entries, kernel.push_bytes)
     }
 
     /// The compute pipeline of the WGSL module of `entry`, one bind group of `entries`, and

@@ -176,7 +176,7 @@ pub fn params<P: bytemuck::Pod>(words: &[u32]) -> P {
 #[cfg(not(target_arch = "spirv"))]
 mod cpu {
     use super::{Group, Load, Mem, WordOp};
-    use core::sync::atomic::{AtomicU32, Ordering::Relaxed};
+    use core::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
 
     /// A workgroup emulated on one CPU thread: `each` loops over the local ids. With
     /// `subgroup_size`, it runs as subgroups of that many invocations (a power of two dividing
@@ -187,6 +187,8 @@ mod cpu {
         pub workgroup_id: [u32; 3],
         pub num_workgroups: [u32; 3],
         pub subgroup_size: Option<u32>,
+        /// The barriers it has executed: one an `each`, `each_scanned` or `each_reduced` step.
+        pub barriers: u32,
     }
 
     impl CpuGroup {
@@ -209,6 +211,7 @@ mod cpu {
                 "subgroups of {s} in a workgroup of {}",
                 self.size
             );
+            self.barriers += 1;
             let mut words = [0u32; Self::MAX_SUBGROUP as usize];
             let mut first = 0;
             while first < self.size {
@@ -243,6 +246,7 @@ mod cpu {
         }
         #[inline]
         fn each(&mut self, mut f: impl FnMut(u32)) {
+            self.barriers += 1;
             for lid in 0..self.size {
                 f(lid);
             }
@@ -335,6 +339,8 @@ mod cpu {
         /// The subgroups a kernel built with subgroup operations runs as (`CpuGroup::subgroup_size`;
         /// one no wider than the workgroup), `None` for one built without.
         pub subgroup_size: Option<u32>,
+        /// Barriers executed, summed over the dispatch's workgroups.
+        pub barriers: &'a AtomicU64,
     }
 
     impl<'a> CpuDispatch<'a> {
@@ -345,7 +351,13 @@ mod cpu {
                 workgroup_id: self.workgroup_id,
                 num_workgroups: self.num_workgroups,
                 subgroup_size: self.subgroup_size.filter(|&s| s <= size),
+                barriers: 0,
             }
+        }
+        /// Books the barriers a workgroup executed.
+        #[inline]
+        pub fn count_barriers(&self, group: &CpuGroup) {
+            self.barriers.fetch_add(group.barriers as u64, Relaxed);
         }
         #[inline]
         pub fn mem(&self, binding: usize) -> CpuMem<'a> {

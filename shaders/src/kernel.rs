@@ -349,7 +349,9 @@ macro_rules! kernel {
                 let params: $params = $crate::exec::params(d.push);
                 let mut _binding = 0usize;
                 $(let $buf = $crate::kernel!(@cpu_bind $mode d _binding); _binding += 1;)*
-                $body(&mut d.group($threads), &params, $($sh_arg)* $($buf),*);
+                let mut group = d.group($threads);
+                $body(&mut group, &params, $($sh_arg)* $($buf),*);
+                d.count_barriers(&group);
             }
             $crate::kernel::KernelDesc {
                 entry: $crate::kernel::entry_name(concat!(module_path!(), "::", stringify!($entry))),

@@ -237,7 +237,7 @@ mod tests {
     }
 
     fn group(size: u32, s: Option<u32>) -> Counting {
-        Counting { group: CpuGroup { size, workgroup_id: [0; 3], num_workgroups: [1; 3], subgroup_size: s }, barriers: 0 }
+        Counting { group: CpuGroup { size, workgroup_id: [0; 3], num_workgroups: [1; 3], subgroup_size: s, barriers: 0 }, barriers: 0 }
     }
 
     /// Words that overflow when added and whose maximum moves around.

@@ -32,11 +32,16 @@ pub fn vulkan_with(options: VulkanOptions) -> Option<VulkanBackend> {
 /// As with [`vulkan`], a missing device fails the test with the reason; `DOF_SKIP_WGPU=1` skips on
 /// purpose, and says so.
 pub fn wgpu() -> Option<WgpuBackend> {
+    wgpu_with(WgpuOptions { backends: wgpu::Backends::VULKAN, ..Default::default() })
+}
+
+/// [`wgpu`] with these options.
+pub fn wgpu_with(options: WgpuOptions) -> Option<WgpuBackend> {
     if std::env::var_os("DOF_SKIP_WGPU").is_some_and(|v| v == "1") {
         eprintln!("DOF_SKIP_WGPU=1: skipping a wgpu test on purpose");
         return None;
     }
-    match WgpuBackend::new(&WgpuOptions { backends: wgpu::Backends::VULKAN, ..Default::default() }) {
+    match WgpuBackend::new(&options) {
         Ok(backend) => Some(backend),
         Err(e) => panic!("wgpu on Vulkan is required for this test (set DOF_SKIP_WGPU=1 to skip on purpose): {e}"),
     }

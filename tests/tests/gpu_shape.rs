@@ -105,6 +105,33 @@ const BUDGETS: &[Budget] = &[
         barriers: 11,
         workgroup_bytes: 23552,
     },
+    // The subgroup variants of the binning and the accumulation: their subgroup path and, for a
+    // workgroup that is not whole subgroups, the path without, so more barriers in the code and
+    // fewer executed (`subgroups_cut_the_barriers_a_multilayer_frame_executes`).
+    Budget {
+        entry: "splat::bin::splat_bin::subgroups",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 13,
+        barriers: 11,
+        workgroup_bytes: 7168,
+    },
+    Budget {
+        entry: "splat::bin::splat_bin_count::subgroups",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 9,
+        barriers: 27,
+        workgroup_bytes: 7168,
+    },
+    Budget {
+        entry: "splat::accumulate::splat_accumulate::subgroups",
+        function_bytes: 256,
+        runtime_indexed: 8,
+        runtime_divisions: 21,
+        barriers: 15,
+        workgroup_bytes: 23552,
+    },
     Budget {
         entry: "splat::pack::splat_pack",
         function_bytes: 256,
@@ -188,6 +215,56 @@ fn no_sort_kernel_divides_by_a_run_time_value() {
         let s = shape(entry);
         assert_eq!(s.runtime_divisions, 0, "{entry}: {s:?}");
     }
+}
+
+/// Only the subgroup variants (`::subgroups`) hold subgroup operations, and each does: a device
+/// without subgroup arithmetic runs every other module.
+#[test]
+fn only_the_subgroup_variants_use_subgroup_operations() {
+    for kernel in dof_shaders::all_kernels() {
+        assert_eq!(shape(kernel.entry).subgroup_ops, 0, "{}", kernel.entry);
+        if let Some(variant) = kernel.subgroup_entry {
+            assert!(shape(variant).subgroup_ops > 0, "{variant}");
+        }
+    }
+    for (entry, _) in dof::shaders::MODULES.iter().filter(|(e, _)| !e.ends_with("::subgroups")) {
+        assert_eq!(shape(entry).subgroup_ops, 0, "{entry}");
+    }
+}
+
+/// The workgroup barriers one multi-layer frame executes, as the CPU backend counts them (one a
+/// step of a kernel body), without subgroups and in subgroups of 8 (lavapipe's) and 32 (NVIDIA's):
+/// the binning's reductions and scans and the accumulation's per-batch reduction take a few steps
+/// in subgroups where they take `log2 256` without.
+#[test]
+fn subgroups_cut_the_barriers_a_multilayer_frame_executes() {
+    let (w, h, layers) = (96, 64, 4);
+    let image = noise_with_sky(w, h, layers);
+    let pixels = w as u64 * h as u64;
+    let executed = |width: Option<u32>| {
+        let mut b = CpuBackend::new();
+        b.set_subgroup_size(width).unwrap();
+        let slots = b.create_buffer(SLOT_WORDS as u64 * pixels * layers as u64, "caller/fragments").unwrap();
+        let counts = b.create_buffer(pixels, "caller/counts").unwrap();
+        let out = b.create_buffer(3 * pixels, "caller/output").unwrap();
+        b.write_buffer(slots, 0, &slot_words(&image)).unwrap();
+        b.write_buffer(counts, 0, &image.counts).unwrap();
+        let desc = SplatContextDesc::new(Extent::new(w, h, layers), SplatOptions::default());
+        let mut ctx = SplatContext::new(&mut b, &desc).unwrap();
+        let before = b.counters();
+        ctx.record(&mut b, &Frame::layers(w, h, layers, test_lens(0.05), SlotBuffer::current(slots), CountBuffer(counts), RgbBuffer(out)))
+            .unwrap();
+        b.submit().unwrap();
+        let barriers = b.counters().since(&before).workgroup_barriers;
+        (barriers, b.read_buffer(out, 0, 3 * pixels).unwrap())
+    };
+    let (without, image_without) = executed(None);
+    let (in_8, image_8) = executed(Some(8));
+    let (in_32, image_32) = executed(Some(32));
+    eprintln!("workgroup barriers a frame executes: {without} without subgroups, {in_8} in subgroups of 8, {in_32} in subgroups of 32");
+    assert!(image_8 == image_without && image_32 == image_without, "the same image, bit for bit");
+    assert!(in_32 * 10 <= without * 7, "in subgroups of 32: {in_32} barriers, against {without} without");
+    assert!(in_32 < in_8 && in_8 < without, "{without}, {in_8}, {in_32}");
 }
 
 /// Every embedded module parses, and none uses function storage without saying so in the table

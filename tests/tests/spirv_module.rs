@@ -75,7 +75,8 @@ fn entry_points(words: &[u32]) -> BTreeSet<String> {
 
 #[test]
 fn every_kernel_the_host_names_has_its_own_module() {
-    let mut declared: BTreeSet<String> = dof_shaders::all_kernels().map(|k| k.entry.to_string()).collect();
+    let mut declared: BTreeSet<String> =
+        dof_shaders::all_kernels().flat_map(|k| [Some(k.entry), k.subgroup_entry]).flatten().map(String::from).collect();
     for draw in dof_shaders::all_draws() {
         declared.extend([draw.vertex.to_string(), draw.fragment.to_string()]);
     }
@@ -164,11 +165,13 @@ fn storage_buffers(words: &[u32]) -> Vec<StorageBuffer> {
 #[test]
 fn read_only_bindings_are_non_writable_in_the_spirv() {
     let (mut read_only, mut writable) = (0, 0);
-    for kernel in dof_shaders::all_kernels() {
-        let words = dof::shaders::module_words(kernel.entry).expect("module");
+    for (kernel, entry) in
+        dof_shaders::all_kernels().flat_map(|k| [Some(k.entry), k.subgroup_entry].into_iter().flatten().map(move |e| (k, e)))
+    {
+        let words = dof::shaders::module_words(entry).expect("module");
         let mut seen = 0u32;
         for b in storage_buffers(&words) {
-            let (entry, i) = (kernel.entry, b.binding);
+            let i = b.binding;
             assert_eq!(b.set, 0, "{entry}: binding {i} is not in descriptor set 0");
             assert!(i < kernel.bindings, "{entry}: binding {i} beyond its {} bindings", kernel.bindings);
             assert_eq!(seen & (1 << i), 0, "{entry}: binding {i} twice");
@@ -183,7 +186,7 @@ fn read_only_bindings_are_non_writable_in_the_spirv() {
         }
         // rust-gpu leaves out a binding the kernel never touches (`raster_setup`'s textures): a module
         // holds a subset of the declared bindings, and nothing is there to decorate for the others.
-        assert_ne!(seen, 0, "{}: no binding in the module", kernel.entry);
+        assert_ne!(seen, 0, "{entry}: no binding in the module");
     }
     // The kernels declare both kinds, so the comparison above saw both answers.
     assert!(read_only > 100 && writable > 50, "{read_only} read-only and {writable} writable bindings checked");

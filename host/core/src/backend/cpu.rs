@@ -12,7 +12,7 @@ use dof_shaders::KernelDesc;
 use dof_shaders::exec::CpuDispatch;
 use rayon::prelude::*;
 use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+use std::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
 use std::time::Instant;
 
 /// Workgroup memory the CPU backend pretends to have. It matches lavapipe's 32 KiB by default so both
@@ -190,6 +190,7 @@ impl CpuBackend {
         }
         let total = groups[0] as u64 * groups[1] as u64 * groups[2] as u64;
         let subgroup_size = self.limits.subgroup_size.filter(|_| kernel.subgroup_entry.is_some());
+        let barriers = AtomicU64::new(0);
         let result = catch_unwind(AssertUnwindSafe(|| {
             (0..total).into_par_iter().for_each(|flat| {
                 let x = (flat % groups[0] as u64) as u32;
@@ -203,6 +204,7 @@ impl CpuBackend {
                     read_only: kernel.read_only,
                     image_layouts: &image_layouts,
                     subgroup_size,
+                    barriers: &barriers,
                 });
             })
         }));
@@ -213,6 +215,7 @@ impl CpuBackend {
         }
         self.counters.commands += 1;
         self.counters.dispatches += 1;
+        self.counters.workgroup_barriers += barriers.into_inner();
         self.times.push(CommandTime { label: label.to_string(), kernel: kernel.entry, ms: start.elapsed().as_secs_f64() * 1e3 });
         Ok(())
     }
@@ -516,6 +519,8 @@ mod tests {
             dispatches: 1,
             empty_dispatches: 0,
             barriers: 0,
+            // The one workgroup's one step.
+            workgroup_barriers: 1,
             device_bytes: 44,
             peak_device_bytes: 56,
         };

@@ -165,6 +165,10 @@ pub struct BackendCounters {
     /// Pipeline barriers recorded between commands (on Vulkan: the recorder's hazard barriers and
     /// an image copy's layout transitions; on the CPU none, each command completes before the next).
     pub barriers: u64,
+    /// Workgroup barriers executed inside kernels, summed over every workgroup: a GPU-shape figure
+    /// the CPU backend counts (one a step of a kernel body, `dof_shaders::exec::Group::each` or a
+    /// subgroup step); GPU backends count none.
+    pub workgroup_barriers: u64,
     /// Bytes of the buffers the backend owns now (`4 · words` of each live `create_buffer` buffer;
     /// imports, staging and draw targets excluded).
     pub device_bytes: u64,
@@ -195,6 +199,7 @@ impl BackendCounters {
             dispatches: self.dispatches - earlier.dispatches,
             empty_dispatches: self.empty_dispatches - earlier.empty_dispatches,
             barriers: self.barriers - earlier.barriers,
+            workgroup_barriers: self.workgroup_barriers - earlier.workgroup_barriers,
             device_bytes: self.device_bytes,
             peak_device_bytes: self.peak_device_bytes,
         }

@@ -131,14 +131,19 @@ fn validation_reports_a_hazard() -> Result<()> {
     Ok(())
 }
 
-/// Every kernel's pipeline builds, and the module passes the layer's checks against the device.
+/// Every kernel's pipeline builds, with and without subgroups where the device has them, and the
+/// module passes the layer's checks against the device.
 #[test]
 fn every_pipeline_builds_cleanly() -> Result<()> {
-    let Some(mut vk) = backend() else { return Ok(()) };
-    for kernel in dof_shaders::all_kernels() {
-        if kernel.shared_bytes <= vk.info.limits.max_shared_bytes {
-            vk.pipelines.get(&vk.device.device, kernel)?;
+    let Some(vk) = backend() else { return Ok(()) };
+    for subgroups in [false, vk.info.limits.subgroup_kernels] {
+        let mut pipelines = Pipelines::new(false, subgroups);
+        for kernel in dof_shaders::all_kernels() {
+            if kernel.shared_bytes <= vk.info.limits.max_shared_bytes {
+                pipelines.get(&vk.device.device, kernel)?;
+            }
         }
+        pipelines.destroy(&vk.device.device);
     }
     assert_eq!(vk.validation_messages(), Vec::<String>::new());
     Ok(())

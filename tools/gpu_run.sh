@@ -11,7 +11,8 @@
 #    and what the driver reports of each kernel's pipeline (`--device`: registers, spills);
 # 2. warm frame times with one timestamp pair a frame and no command timed on its own
 #    (`dof bench frame --span-only`, 30 frames after a warm-up of at least 500 ms): multi-layer 4x4
-#    and the ring gather on every built-in scene at 1920x1080; then multi-layer 4x4 per stage
+#    and the ring gather on every built-in scene at 1920x1080; multi-layer 4x4 on three of them
+#    without subgroup operations (`DOF_SUBGROUPS=off`); then multi-layer 4x4 per stage
 #    (`dof bench frame` per command) at that size;
 # 3. with BASE_DOF, that build against DOF, interleaved (tools/gpu_compare.sh: multi-layer 4x4 on
 #    every built-in scene at 1920x1080; into OUT/compare/);
@@ -62,8 +63,8 @@ orbit() { # size [--span-only]
     --width "$w" --height "$h" --frames 20 ${2:-} --json > "$m/orbit-fence-$1$tag.json" 2> "$m/orbit-fence-$1$tag.err" \
     || echo "orbit $1$tag failed: $(tail -n 1 "$m/orbit-fence-$1$tag.err")" | tee -a "$log"
 }
-span_only() { # time limit, size, scene, method, merge: warm frames, one timestamp pair each
-  local w=${2%x*} h=${2#*x} name="span-$3-$2-$4-$5"
+span_only() { # time limit, size, scene, method, merge [prefix]: warm frames, one timestamp pair each
+  local w=${2%x*} h=${2#*x} name="${6:-}span-$3-$2-$4-$5"
   step "$1" "$dof" bench frame --backend vulkan --scene "$3" --method "$4" --merge "$5" --width "$w" --height "$h" \
     --frames 30 --span-only --json > "$m/$name.json" 2> "$m/$name.err" \
     || echo "$name failed: $(tail -n 1 "$m/$name.err")" | tee -a "$log"
@@ -109,6 +110,8 @@ for scene in simple railing columns highlights fence edges; do
   span_only 20 "$s1" "$scene" multilayer 4x4
   span_only 20 "$s1" "$scene" ring-gather none
 done
+# The same frames with every kernel run without subgroup operations: what the subgroup variants save.
+for scene in simple railing fence; do DOF_SUBGROUPS=off span_only 20 "$s1" "$scene" multilayer 4x4 no-subgroups-; done
 measure 120 --sizes "$s1" --methods multilayer:4x4
 if [ -n "${BASE_DOF:-}" ]; then
   step 130 bash tools/gpu_compare.sh "$m/compare" "$BASE_DOF" "$dof" --sizes "$s1" --methods multilayer:4x4 --deadline 110 >> "$log" 2>&1

@@ -72,3 +72,24 @@ if inputs:
     print("|---|---|---|---|---|---|---|---|")
     print("\n".join(inputs))
     print()
+
+# The subgroup variants: the same span-only frames with every kernel run without subgroup
+# operations (DOF_SUBGROUPS=off), beside those with them.
+spans = {}
+for prefix in ("span-", "no-subgroups-span-"):
+    for r in bench_runs(out, prefix):
+        spans[(prefix, r["scene"], r["width"], r["height"], r["method"], r["merge"])] = r
+pairs = []
+for (prefix, scene, w, h, method, merge), off in sorted(spans.items()):
+    on = spans.get(("span-", scene, w, h, method, merge))
+    if prefix == "no-subgroups-span-" and on and on["frame_ms"] and off["frame_ms"]:
+        pairs.append(f"| {scene} | {w}x{h} | {method} {merge} | {ms(on['frame_ms'])} | {ms(off['frame_ms'])} "
+                     f"| {off['frame_ms'] / on['frame_ms']:.2f} |")
+if pairs:
+    print("## Subgroups\n")
+    print("Span-only frame times (median ms) with the kernels' subgroup variants and without them (`DOF_SUBGROUPS=off`).\n")
+    print("| scene | size | method | with subgroups | without | without / with |")
+    print("|---|---|---|---|---|---|")
+    print("\n".join(pairs))
+    print()
+

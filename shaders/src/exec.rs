@@ -39,12 +39,12 @@ pub trait Group {
     }
 
     /// Like [`Group::each`] over positions instead of local ids: `input(p)` for every position
-    /// `p < size`, then `output(p, x)` (both with `data`, which they share), `x` the inclusive scan under `op` of the inputs of `p`'s
-    /// subgroup up to `p`, then a barrier. Subgroup `k` holds positions `k·s .. (k+1)·s` (`s` as
-    /// [`Group::subgroup_size`]); which invocation runs which position is the backend's (on the GPU
-    /// it need not be the local id), so `input` and `output` may touch only what position `p` owns
-    /// or nothing another position writes in the same step. Without subgroups every position is
-    /// its own subgroup.
+    /// `p < size`, then `output(p, x)` (both given `data`, which they share), `x` the inclusive
+    /// scan under `op` of the inputs of `p`'s subgroup up to `p`, then a barrier. Subgroup `k`
+    /// holds positions `k·s .. (k+1)·s` (`s` as [`Group::subgroup_size`]); which invocation runs
+    /// which position is the backend's (on the GPU it need not be the local id), so `input` may
+    /// read nothing that another position's `output` writes in the same step. Without subgroups
+    /// every position is its own subgroup.
     #[inline]
     fn each_scanned<O: WordOp, D: ?Sized>(
         &mut self,

@@ -112,6 +112,13 @@ pub struct WgpuBackend {
     retire: RetireQueue,
 }
 
+/// Whether the kernels' subgroup variants can run on `device`: it has [`wgpu::Features::SUBGROUP`],
+/// and it is not a browser's WebGPU, whose subgroups lack the `subgroup_id` and `num_subgroups`
+/// built-ins the variants read (naga's, which native backends have).
+fn subgroups_usable(device: &wgpu::Device, info: &wgpu::AdapterInfo) -> bool {
+    device.features().contains(wgpu::Features::SUBGROUP) && info.backend != wgpu::Backend::BrowserWebGpu
+}
+
 impl WgpuBackend {
     /// A device of the first adapter wgpu offers for `options`.
     pub fn new(options: &WgpuOptions) -> Result<Self> {
@@ -129,7 +136,9 @@ impl WgpuBackend {
                 info.name, info.backend
             )));
         }
-        let subgroups = options.subgroups.resolve(adapter.features().contains(wgpu::Features::SUBGROUP))?;
+        let subgroups = options
+            .subgroups
+            .resolve(adapter.features().contains(wgpu::Features::SUBGROUP) && info.backend != wgpu::Backend::BrowserWebGpu)?;
         let descriptor = wgpu::DeviceDescriptor {
             label: Some("dof"),
             required_features: wgpu::Features::IMMEDIATES
@@ -149,7 +158,7 @@ impl WgpuBackend {
     /// adapter's. Frames on it are recorded into the caller's encoder ([`WgpuBackend::record_into`]).
     /// The backend's own submissions are timed where the device has [`wgpu::Features::TIMESTAMP_QUERY`].
     /// Kernels run their subgroup variants where the device has [`wgpu::Features::SUBGROUP`]
-    /// ([`WgpuBackend::set_subgroups`] turns them off).
+    /// outside a browser ([`WgpuBackend::set_subgroups`] turns them off).
     pub fn from_device(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Self {
         let errors = Arc::new(Mutex::new(Vec::new()));
         let sink = errors.clone();
@@ -164,7 +173,7 @@ impl WgpuBackend {
             max_workgroup_invocations: l.max_compute_invocations_per_workgroup,
             max_workgroup_count: [l.max_compute_workgroups_per_dimension; 3],
             subgroup_size: (info.subgroup_min_size == info.subgroup_max_size).then_some(info.subgroup_min_size),
-            subgroup_kernels: device.features().contains(wgpu::Features::SUBGROUP),
+            subgroup_kernels: subgroups_usable(&device, &info),
             max_buffer_bytes: l.max_buffer_size.min(l.max_storage_buffer_binding_size),
             serial_invocations: false,
         };
@@ -198,10 +207,10 @@ impl WgpuBackend {
         &self.device
     }
 
-    /// Whether kernels run their subgroup variants, on this device (`Required` is refused on a
-    /// device without [`wgpu::Features::SUBGROUP`]). Pipelines made before are made again.
+    /// Whether kernels run their subgroup variants, on this device (`Required` is refused where
+    /// [`subgroups_usable`] says no). Pipelines made before are made again.
     pub fn set_subgroups(&mut self, subgroups: Subgroups) -> Result<()> {
-        let on = subgroups.resolve(self.device.features().contains(wgpu::Features::SUBGROUP))?;
+        let on = subgroups.resolve(subgroups_usable(&self.device, &self.info))?;
         if on != self.limits.subgroup_kernels {
             self.limits.subgroup_kernels = on;
             self.pipelines.clear();

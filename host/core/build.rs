@@ -229,7 +229,7 @@ mod rebuild {
                 return Err(format!("two entry points map to the module file {file}").into());
             }
             let bytes = std::fs::read(path)?;
-            let words: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
+            let words: Vec<u32> = bytes.as_chunks::<4>().0.iter().map(|c| u32::from_le_bytes(*c)).collect();
             let words = drop_unused_subgroup_capabilities(&words).map_err(|e| format!("{}: {e}", path.display()))?;
             contents.insert(file.clone(), words.iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<u8>>());
             manifest.modules.insert(entry.clone(), file);

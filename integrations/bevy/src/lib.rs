@@ -184,7 +184,10 @@ struct BevyDevice<'w> {
 /// The backend on Bevy's device, made on first use.
 fn wgpu_backend<'a>(backend: &'a mut Option<WgpuBackend>, bevy: &BevyDevice) -> &'a mut WgpuBackend {
     backend.get_or_insert_with(|| {
-        WgpuBackend::from_device(bevy.device.wgpu_device().clone(), (**bevy.queue).clone(), (**bevy.adapter).clone())
+        let backend = WgpuBackend::from_device(bevy.device.wgpu_device().clone(), (**bevy.queue).clone(), (**bevy.adapter).clone());
+        let subgroups = if backend.limits().subgroup_kernels { "in subgroups" } else { "without subgroups (the device has none)" };
+        log::info!("bevy_dof: the kernels scan and reduce {subgroups}");
+        backend
     })
 }
 

@@ -337,7 +337,7 @@ mod cpu {
         /// with no images.
         pub image_layouts: &'a [[u32; 2]],
         /// The subgroups a kernel built with subgroup operations runs as (`CpuGroup::subgroup_size`;
-        /// one no wider than the workgroup), `None` for one built without.
+        /// a workgroup narrower than that is one subgroup), `None` for one built without.
         pub subgroup_size: Option<u32>,
         /// Barriers executed, summed over the dispatch's workgroups.
         pub barriers: &'a AtomicU64,
@@ -350,7 +350,8 @@ mod cpu {
                 size,
                 workgroup_id: self.workgroup_id,
                 num_workgroups: self.num_workgroups,
-                subgroup_size: self.subgroup_size.filter(|&s| s <= size),
+                // A workgroup narrower than the subgroups is one subgroup.
+                subgroup_size: self.subgroup_size.filter(|_| size.is_power_of_two()).map(|s| s.min(size)),
                 barriers: 0,
             }
         }

@@ -215,6 +215,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "dispatches_per_frame": per_frame(c.dispatches),
             "empty_dispatches_per_frame": per_frame(c.empty_dispatches),
             "barriers_per_frame": per_frame(c.barriers),
+            "workgroup_barriers_per_frame": per_frame(c.workgroup_barriers),
             "cpu_record_ms": measured.record_ms,
             "gpu_ms": measured.gpu_ms,
             "peel_passes_per_frame": measured.peel_passes as f64 / args.frames as f64,
@@ -274,6 +275,14 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         if b.kind() == dof::backend::BackendKind::Cpu { "" } else { ", not counted on a GPU" },
         per_frame(c.barriers)
     );
+    if b.kind() == dof::backend::BackendKind::Cpu {
+        let subgroups = b.limits().subgroup_size.filter(|_| b.limits().subgroup_kernels);
+        println!(
+            "workgroup barriers executed per frame, summed over workgroups: {:.0} ({})",
+            per_frame(c.workgroup_barriers),
+            subgroups.map_or("without subgroups".to_string(), |s| format!("in subgroups of {s}"))
+        );
+    }
     println!(
         "CPU time to record a frame: {:.3} ms{}",
         measured.record_ms,

@@ -14,7 +14,7 @@ pub mod stress;
 #[cfg(feature = "view")]
 pub mod view;
 
-use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
+use dof::backend::{Backend, CpuBackend, Subgroups, VulkanBackend, VulkanOptions};
 
 /// The names of the frame API's methods (its registry), as a flag's possible values.
 pub fn method_names() -> clap::builder::PossibleValuesParser {
@@ -30,12 +30,22 @@ pub enum BackendChoice {
     Both,
 }
 
+/// The CPU backend, running the kernels' subgroup variants unless `DOF_SUBGROUPS=off` (which the
+/// GPU backends read too).
+pub fn cpu_backend() -> anyhow::Result<CpuBackend> {
+    let mut cpu = CpuBackend::new();
+    if !Subgroups::Auto.resolve(true)? {
+        cpu.set_subgroup_size(None)?;
+    }
+    Ok(cpu)
+}
+
 /// The backends `choice` names. Vulkan failing to start is an error when asked for alone, and a
 /// printed note (with the reason and the fix) when `both` was asked for.
 pub fn backends(choice: BackendChoice, validation: bool) -> anyhow::Result<Vec<Box<dyn Backend>>> {
     let mut out: Vec<Box<dyn Backend>> = Vec::new();
     if choice != BackendChoice::Vulkan {
-        out.push(Box::new(CpuBackend::new()));
+        out.push(Box::new(cpu_backend()?));
     }
     if choice != BackendChoice::Cpu {
         match VulkanBackend::new(&VulkanOptions { validation, ..Default::default() }) {

@@ -6,7 +6,7 @@
 //! result is finite where its input is.
 
 use super::render::BackendArg;
-use dof::backend::{Backend, BufferId, CpuBackend, VulkanBackend, VulkanOptions};
+use dof::backend::{Backend, BufferId, VulkanBackend, VulkanOptions};
 use dof::frame::{
     ContextDesc, CountBuffer, DofContext, Extent, Frame, METHODS, MethodInfo, MethodOption, MethodOptions, Reads, RgbBuffer, SlotBuffer,
     Value,
@@ -74,7 +74,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
     }
     let validation = args.backend == BackendArg::Vulkan && !args.no_validation;
     let mut backend: Box<dyn Backend> = match args.backend {
-        BackendArg::Cpu => Box::new(CpuBackend::new()),
+        BackendArg::Cpu => Box::new(super::cpu_backend()?),
         BackendArg::Vulkan => Box::new(VulkanBackend::new(&VulkanOptions { validation, ..Default::default() })?),
         #[cfg(feature = "wgpu")]
         BackendArg::Wgpu => Box::new(dof::backend::WgpuBackend::new(&Default::default())?),

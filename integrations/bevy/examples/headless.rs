@@ -1,19 +1,23 @@
 //! The plugin in a headless Bevy app, checked: five cameras see the same scene of unlit panels (a
 //! far wall, a pane at the focus distance, a near bar; drawn with the peel material) into linear
 //! RGBA16F images of their own. One has no depth of field; one a [`LensBlur`] closed down to a
-//! pinhole; one a [`LensBlur`] at f/1 on a 36 mm sensor; and the last two the same two lenses with
-//! four layers, peeled by Bevy's passes. After a few frames their images are read back, and the app
-//! fails unless:
+//! pinhole; one a [`LensBlur`] at f/1 on a 36 mm sensor; the next two the same two lenses with
+//! four layers, peeled by Bevy's passes; and the last two, through distance fog, none and the
+//! peeled pinhole. After a few frames their images are read back, and the app fails unless:
 //! - the pinhole through the library equals the camera without it, bit for bit (the library reads
 //!   the HDR image and writes it back exactly when nothing is blurred), and so does the peeled
-//!   pinhole (its front layer, within one RGBA16F step);
+//!   pinhole (its front layer, within one RGBA16F step), through fog as well (the pass cameras
+//!   draw the front layers with the camera's fog);
 //! - the blurred images differ from the pinhole where the near bar and the panels' edges are out
 //!   of focus, and equal it in the middle of the pane in focus;
 //! - the peeled blur differs from the single-layer one behind the near bar's edges, where the
 //!   peel finds the pane and the wall the bar hides;
 //! - every pixel is finite.
 //!
-//! It writes the images as EXR into `out/`, and the scene and camera as glTF
+//! Then every target is resized to 384x256 (the peeled cameras' passes are made again) and the
+//! same checks run on the images read back at that size.
+//!
+//! It writes the first images as EXR into `out/`, and the scene and camera as glTF
 //! (`out/bevy-scene.gltf`), so that `dof render` can render the same view (`compare.sh` does, and
 //! measures the PSNR of Bevy's blurred frame against it).
 //!
@@ -32,7 +36,9 @@ use std::time::Duration;
 
 const WIDTH: u32 = 512;
 const HEIGHT: u32 = 320;
-/// Frames rendered before the images are read.
+/// The size every target is resized to for the second round of checks.
+const RESIZED: (u32, u32) = (384, 256);
+/// Frames rendered before the images are read, in each round.
 const WARM_UP: u32 = 8;
 
 /// A panel facing the camera: width, height, centre, linear colour (unlit).
@@ -47,18 +53,23 @@ const PANELS: [Panel; 3] = [
 /// What a ray that hits nothing sees (the cameras' clear colour), linear.
 const BACKGROUND: [f32; 3] = [0.5, 0.7, 1.0];
 
-/// The cameras.
-const NAMES: [&str; CAMERAS] = ["no-dof", "pinhole", "blurred", "peeled-pinhole", "peeled"];
-const CAMERAS: usize = 5;
+/// The cameras: the last two see the scene through distance fog.
+const NAMES: [&str; CAMERAS] = ["no-dof", "pinhole", "blurred", "peeled-pinhole", "peeled", "fogged", "peeled-fogged-pinhole"];
+const CAMERAS: usize = 7;
 
+/// Each camera's image read back in one round (RGBA16F texels), once it is.
+type Round = [Option<Vec<u8>>; CAMERAS];
+
+/// The first round (at `WIDTH` x `HEIGHT`) and the second (at `RESIZED`).
 #[derive(Resource, Clone, Default)]
-struct Captured(Arc<Mutex<[Option<Vec<u8>>; CAMERAS]>>);
+struct Captured(Arc<Mutex<[Round; 2]>>);
 
 #[derive(Resource)]
 struct Targets([Handle<Image>; CAMERAS]);
 
+/// A readback's camera and round.
 #[derive(Component)]
-struct Capture(usize);
+struct Capture(usize, usize);
 
 fn main() -> AppExit {
     let captured = Captured::default();
@@ -100,9 +111,11 @@ fn setup(
     });
     let pinhole = LensBlur { aperture_f_stops: f32::INFINITY, ..default() };
     let blurred = LensBlur { aperture_f_stops: 1.0, sensor_height: 0.036, ..default() };
-    let lenses = [None, Some(pinhole), Some(blurred), Some(LensBlur { layers: 4, ..pinhole }), Some(LensBlur { layers: 4, ..blurred })];
+    let peeled_pinhole = LensBlur { layers: 4, ..pinhole };
+    let lenses =
+        [None, Some(pinhole), Some(blurred), Some(peeled_pinhole), Some(LensBlur { layers: 4, ..blurred }), None, Some(peeled_pinhole)];
     // The peeled cameras' pass cameras take the orders just below theirs.
-    let orders = [0, 1, 2, 10, 20];
+    let orders = [0, 1, 2, 10, 20, 30, 40];
     for (i, lens) in lenses.into_iter().enumerate() {
         let mut camera = commands.spawn((
             Camera3d::default(),
@@ -121,46 +134,96 @@ fn setup(
         if let Some(lens) = lens {
             camera.insert(lens);
         }
+        if NAMES[i].contains("fogged") {
+            camera.insert(DistanceFog {
+                color: Color::linear_rgb(0.6, 0.6, 0.6),
+                falloff: FogFalloff::Linear { start: 1.0, end: 12.0 },
+                ..default()
+            });
+        }
     }
     commands.insert_resource(Targets(targets));
 }
 
-/// After the warm-up, a readback of each camera's image.
-fn read_back(mut commands: Commands, targets: Res<Targets>, mut frame: Local<u32>) {
+/// After the warm-up, a readback of each camera's image; once all are back, every target resized
+/// (the peeled cameras' passes are made again at the new size), and after another warm-up a
+/// second readback.
+fn read_back(
+    mut commands: Commands,
+    targets: Res<Targets>,
+    captured: Res<Captured>,
+    mut images: ResMut<Assets<Image>>,
+    mut frame: Local<u32>,
+    mut resized_at: Local<Option<u32>>,
+) {
     *frame += 1;
-    if *frame == WARM_UP {
-        for (i, target) in targets.0.iter().enumerate() {
-            commands.spawn((Readback::texture(target.clone()), Capture(i))).observe(store);
+    let round_done = |round: usize| captured.0.lock().is_ok_and(|slots| slots[round].iter().all(Option::is_some));
+    let round = match *resized_at {
+        None if *frame == WARM_UP => 0,
+        None if round_done(0) => {
+            for target in &targets.0 {
+                if let Some(mut image) = images.get_mut(target) {
+                    image.resize(bevy::render::render_resource::Extent3d { width: RESIZED.0, height: RESIZED.1, depth_or_array_layers: 1 });
+                }
+            }
+            *resized_at = Some(*frame);
+            return;
         }
+        Some(at) if *frame == at + WARM_UP => 1,
+        _ => return,
+    };
+    for (i, target) in targets.0.iter().enumerate() {
+        commands.spawn((Readback::texture(target.clone()), Capture(i, round))).observe(store);
     }
 }
 
 fn store(event: On<ReadbackComplete>, captures: Query<&Capture>, captured: Res<Captured>, mut commands: Commands) {
-    if let Ok(capture) = captures.get(event.entity)
+    if let Ok(&Capture(camera, round)) = captures.get(event.entity)
         && let Ok(mut slots) = captured.0.lock()
     {
-        slots[capture.0].get_or_insert_with(|| event.data.clone());
+        slots[round][camera].get_or_insert_with(|| event.data.clone());
         commands.entity(event.entity).despawn();
     }
 }
 
 fn finish(captured: Res<Captured>, mut exit: MessageWriter<AppExit>, mut frame: Local<u32>) {
     *frame += 1;
-    let done = captured.0.lock().is_ok_and(|slots| slots.iter().all(Option::is_some));
-    if done || *frame > WARM_UP + 200 {
+    let done = captured.0.lock().is_ok_and(|slots| slots[1].iter().all(Option::is_some));
+    if done || *frame > 2 * WARM_UP + 400 {
         exit.write(AppExit::Success);
     }
 }
 
-/// The checks of the module docs, on the images read back.
+/// The checks of the module docs, on the images of both rounds.
 fn check(captured: &Captured) -> AppExit {
     let Ok(slots) = captured.0.lock() else { return AppExit::error() };
-    let Some(bytes) = slots.iter().cloned().collect::<Option<Vec<Vec<u8>>>>() else {
-        let missing: Vec<&str> = slots.iter().zip(NAMES).filter(|(s, _)| s.is_none()).map(|(_, n)| n).collect();
-        eprintln!("FAILED: not every camera's image was read back (missing: {})", missing.join(", "));
-        return AppExit::error();
-    };
-    // RGBA16F texels (rows of 512 · 8 bytes need no padding) as linear RGB.
+    let mut failures = Vec::new();
+    for (round, (width, height)) in [(WIDTH, HEIGHT), RESIZED].into_iter().enumerate() {
+        println!("== {width}x{height}");
+        let Some(bytes) = slots[round].iter().cloned().collect::<Option<Vec<Vec<u8>>>>() else {
+            let missing: Vec<&str> = slots[round].iter().zip(NAMES).filter(|(s, _)| s.is_none()).map(|(_, n)| n).collect();
+            failures.push(format!("at {width}x{height}, not every camera's image was read back (missing: {})", missing.join(", ")));
+            continue;
+        };
+        check_round(&bytes, round == 0, width, height, &mut failures);
+    }
+    if failures.is_empty() {
+        println!("ok");
+        AppExit::Success
+    } else {
+        eprintln!("FAILED:\n  {}", failures.join("\n  "));
+        AppExit::error()
+    }
+}
+
+/// The checks of one round, at `width` x `height`, into `failures` (prefixed with the size); the
+/// first round's images are written out.
+fn check_round(bytes: &[Vec<u8>], write: bool, width: u32, height: u32, all_failures: &mut Vec<String>) {
+    if let Some(b) = bytes.iter().find(|b| b.len() != (8 * width * height) as usize) {
+        all_failures.push(format!("at {width}x{height}: an image of {} bytes read back", b.len()));
+        return;
+    }
+    // RGBA16F texels (rows of 512 or 384 texels, 8 bytes each, need no padding) as linear RGB.
     let images: Vec<Vec<[f32; 3]>> = bytes
         .iter()
         .map(|b| {
@@ -168,11 +231,10 @@ fn check(captured: &Captured) -> AppExit {
             halves.chunks(4).map(|p| [f16_to_f32(p[0]), f16_to_f32(p[1]), f16_to_f32(p[2])]).collect()
         })
         .collect();
-    if let Err(e) = write_outputs(&images) {
-        eprintln!("FAILED: writing out/: {e}");
-        return AppExit::error();
+    if write && let Err(e) = write_outputs(&images) {
+        all_failures.push(format!("writing out/: {e}"));
     }
-    let [none, pinhole, blurred, peeled_pinhole, peeled] = [0, 1, 2, 3, 4].map(|i| &images[i]);
+    let [none, pinhole, blurred, peeled_pinhole, peeled, fogged, peeled_fogged] = [0, 1, 2, 3, 4, 5, 6].map(|i| &images[i]);
     let mut failures = Vec::new();
     if !images.iter().flatten().flatten().all(|v| v.is_finite()) {
         failures.push("a pixel is not finite".to_string());
@@ -190,17 +252,26 @@ fn check(captured: &Captured) -> AppExit {
     if worst > 1.0 / 1024.0 {
         failures.push(format!("the peeled pinhole differs from the camera without depth of field by {worst}"));
     }
+    // The pass cameras draw the front layers with the camera's fog (and its other view settings).
+    let worst = largest(fogged, peeled_fogged);
+    println!("peeled pinhole through fog against the fogged camera without depth of field: largest difference {worst}");
+    if worst > 1.0 / 1024.0 {
+        failures.push(format!("the peeled pinhole through fog differs from the fogged camera by {worst}"));
+    }
+    if largest(none, fogged) < 0.05 {
+        failures.push("the fog changed nothing".to_string());
+    }
     let changed = |a: &[f32; 3], b: &[f32; 3]| (0..3).any(|c| (a[c] - b[c]).abs() > 0.01 * b[c].abs().max(0.01));
     let count = |a: &[[f32; 3]], b: &[[f32; 3]]| a.iter().zip(b).filter(|(a, b)| changed(a, b)).count();
     for (name, image) in [("single-layer", blurred), ("peeled", peeled)] {
         let differing = count(pinhole, image);
-        println!("pixels the {name} blur changed by more than 1%: {differing} of {}", WIDTH * HEIGHT);
-        if differing < (WIDTH * HEIGHT / 50) as usize {
+        println!("pixels the {name} blur changed by more than 1%: {differing} of {}", width * height);
+        if differing < (width * height / 50) as usize {
             failures.push(format!("the {name} blur changed only {differing} pixels"));
         }
         // The middle of the pane, in focus at 3 m, away from its edges and the bar's blur.
-        let (x, y) = (WIDTH / 2 - 40, HEIGHT / 2 + 20);
-        let at = (y * WIDTH + x) as usize;
+        let (x, y) = (width / 2 - 40 * width / WIDTH, height / 2 + 20 * height / HEIGHT);
+        let at = (y * width + x) as usize;
         if changed(&image[at], &pinhole[at]) {
             failures.push(format!("the pane in focus changed at ({x}, {y}) in the {name} blur: {:?} against {:?}", image[at], pinhole[at]));
         }
@@ -208,16 +279,10 @@ fn check(captured: &Captured) -> AppExit {
     // What the peel adds: the surfaces behind the near bar, seen through its blurred edges.
     let differing = count(blurred, peeled);
     println!("pixels where the peeled blur differs from the single-layer one by more than 1%: {differing}");
-    if differing < (WIDTH * HEIGHT / 200) as usize {
+    if differing < (width * height / 200) as usize {
         failures.push(format!("the peeled blur differs from the single-layer one in only {differing} pixels"));
     }
-    if failures.is_empty() {
-        println!("ok");
-        AppExit::Success
-    } else {
-        eprintln!("FAILED:\n  {}", failures.join("\n  "));
-        AppExit::error()
-    }
+    all_failures.extend(failures.into_iter().map(|f| format!("at {width}x{height}: {f}")));
 }
 
 /// The three images as EXR, and the scene and camera as glTF for `dof render`.

@@ -111,7 +111,17 @@ impl Plugin for LensBlurPlugin {
             ExtractComponentPlugin::<peel::PeelPass>::default(),
             MaterialPlugin::<PeelMaterial>::default(),
         ))
-        .add_systems(PostUpdate, (configure_cameras, peel::sync_pass_cameras.after(bevy::camera::CameraUpdateSystems)));
+        .add_systems(PostUpdate, (configure_cameras, peel::sync_pass_cameras.after(bevy::camera::CameraUpdateSystems)))
+        .add_systems(
+            PostUpdate,
+            (
+                peel::mirror_view_setting::<bevy::pbr::DistanceFog>,
+                peel::mirror_view_setting::<bevy::light::AmbientLight>,
+                peel::mirror_view_setting::<bevy::light::EnvironmentMapLight>,
+                peel::mirror_view_setting::<bevy::camera::Exposure>,
+            )
+                .after(peel::sync_pass_cameras),
+        );
         let Some(render_app) = app.get_sub_app_mut(RenderApp) else {
             return;
         };

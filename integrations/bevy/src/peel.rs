@@ -3,9 +3,9 @@
 //! `dof_core::frame::RendererPeel`) and blurred by multi-layer tiled splatting.
 //!
 //! - **Passes.** A view of `L` layers is drawn `L` times a frame: by `L − 1` pass cameras the
-//!   plugin spawns as children of the camera (the same projection and clear colour, orders just
-//!   below the camera's, offscreen targets of the view's size), then by the camera itself, whose
-//!   main pass is the last layer.
+//!   plugin spawns as children of the camera (the same projection, clear colour, fog, ambient and
+//!   environment light and exposure; orders just below the camera's; offscreen targets of the
+//!   view's size), then by the camera itself, whose main pass is the last layer.
 //! - **The test.** Meshes take part through [`PeelMaterial`], a `StandardMaterial` whose main pass
 //!   discards a fragment unless it lies beyond the bound the library wrote for the pass (one f32 a
 //!   pixel, in the [`ShaderBuffer`] every peel material binds). Outside a peel the bound keeps
@@ -174,6 +174,31 @@ pub(crate) fn sync_pass_cameras(
     }
     if buffers.get(&PEEL_BOUND).is_none_or(|b| b.buffer_size() < bound_bytes) {
         let _ = buffers.insert(&PEEL_BOUND, bound_of(bound_bytes));
+    }
+}
+
+/// Keeps a view setting `C` of each peeled camera on its pass cameras, so that every layer is
+/// shaded as the camera's own pass shades it: copied when the camera's changes or a pass camera
+/// lacks it, removed with the camera's.
+pub(crate) fn mirror_view_setting<C: Component + Clone>(
+    mut commands: Commands,
+    owners: Query<(Option<Ref<C>>, &PeelCameras)>,
+    passes: Query<Has<C>, With<PeelPass>>,
+) {
+    for (setting, cameras) in &owners {
+        for &pass in &cameras.cameras {
+            // A pass camera spawned this frame is there from the next.
+            let Ok(has) = passes.get(pass) else { continue };
+            match &setting {
+                Some(s) if s.is_changed() || !has => {
+                    commands.entity(pass).insert(C::clone(s));
+                }
+                None if has => {
+                    commands.entity(pass).remove::<C>();
+                }
+                _ => {}
+            }
+        }
     }
 }
 

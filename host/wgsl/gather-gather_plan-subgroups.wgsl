@@ -121,51 +121,51 @@ fn function_() {
     var phi_210_: f32;
     var phi_216_: f32;
     var phi_218_: f32;
-    var phi_580_: bool;
+    var phi_590_: bool;
     var phi_253_: u32;
     var phi_122_: u32;
     var phi_125_: u32;
-    var phi_587_: bool;
+    var phi_597_: bool;
     var phi_277_: type_20;
     var phi_279_: type_20;
     var phi_280_: bool;
     var phi_281_: type_20;
     var phi_282_: bool;
     var phi_287_: type_20;
-    var phi_310_: u32;
-    var phi_313_: u32;
-    var phi_331_: u32;
-    var phi_311_: u32;
+    var phi_487_: u32;
+    var phi_490_: u32;
+    var phi_530_: u32;
+    var phi_488_: u32;
+    var phi_491_: u32;
+    var phi_612_: bool;
     var phi_314_: u32;
-    var phi_342_: u32;
-    var phi_345_: u32;
-    var phi_346_: u32;
-    var phi_348_: u32;
-    var phi_376_: u32;
-    var phi_378_: u32;
-    var phi_381_: u32;
-    var phi_399_: u32;
-    var phi_379_: u32;
-    var phi_382_: u32;
-    var phi_343_: u32;
+    var phi_317_: u32;
+    var phi_335_: u32;
+    var phi_315_: u32;
+    var phi_318_: u32;
     var phi_347_: u32;
-    var phi_349_: u32;
-    var phi_613_: bool;
-    var phi_416_: u32;
-    var phi_419_: u32;
-    var phi_421_: u32;
-    var phi_436_: u32;
-    var phi_417_: u32;
-    var phi_420_: u32;
-    var phi_422_: u32;
-    var phi_626_: bool;
-    var phi_477_: u32;
-    var phi_480_: u32;
-    var phi_520_: u32;
-    var phi_478_: u32;
-    var phi_481_: u32;
-    var phi_602_: bool;
-    var phi_535_: u32;
+    var phi_350_: u32;
+    var phi_351_: u32;
+    var phi_353_: u32;
+    var phi_381_: u32;
+    var phi_387_: u32;
+    var phi_390_: u32;
+    var phi_408_: u32;
+    var phi_388_: u32;
+    var phi_391_: u32;
+    var phi_348_: u32;
+    var phi_352_: u32;
+    var phi_354_: u32;
+    var phi_623_: bool;
+    var phi_426_: u32;
+    var phi_429_: u32;
+    var phi_431_: u32;
+    var phi_446_: u32;
+    var phi_427_: u32;
+    var phi_430_: u32;
+    var phi_432_: u32;
+    var phi_636_: bool;
+    var phi_545_: u32;
     var local_67: u32;
     var local_68: u32;
     var local_69: u32;
@@ -208,7 +208,7 @@ fn function_() {
                     let _e139 = local_5;
                     if (_e138 < _e139) {
                     } else {
-                        phi_587_ = true;
+                        phi_597_ = true;
                         break;
                     }
                     let _e141 = local_9;
@@ -231,63 +231,63 @@ fn function_() {
                         local_15 = f32(_e154);
                         let _e156 = local_13;
                         if (_e156 == 2139095040u) {
-                            let _e161 = global_3.member.member_4.member_1;
-                            let _e166 = global_3.member.member_4.member;
-                            let _e171 = global_3.member.member_4.member_2;
-                            let _e177 = global_3.member.member_4.member_3;
-                            phi_218_ = (0.5f * ((((2f * _e161) * _e166) / (_e171 - _e166)) * _e177));
+                            let _e204 = global_3.member.member_4.member_1;
+                            let _e209 = global_3.member.member_4.member;
+                            let _e214 = global_3.member.member_4.member_2;
+                            let _e220 = global_3.member.member_4.member_3;
+                            phi_218_ = (0.5f * ((((2f * _e204) * _e209) / (_e214 - _e209)) * _e220));
                         } else {
-                            let _e180 = local_14;
-                            if _e180 {
+                            let _e158 = local_14;
+                            if _e158 {
                                 phi_181_ = false;
                             } else {
-                                let _e181 = local_13;
-                                phi_181_ = (_e181 <= 2139095040u);
+                                let _e159 = local_13;
+                                phi_181_ = (_e159 <= 2139095040u);
                             }
-                            let _e184 = phi_181_;
-                            if _e184 {
-                                let _e188 = global_3.member.member_4.member_1;
-                                let _e193 = global_3.member.member_4.member;
-                                let _e198 = global_3.member.member_4.member_2;
-                                local_16 = _e198;
-                                let _e204 = global_3.member.member_4.member_3;
-                                let _e205 = ((((2f * _e188) * _e193) / (_e198 - _e193)) * _e204);
-                                local_17 = _e205;
-                                if (_e205 == 0f) {
+                            let _e162 = phi_181_;
+                            if _e162 {
+                                let _e166 = global_3.member.member_4.member_1;
+                                let _e171 = global_3.member.member_4.member;
+                                let _e176 = global_3.member.member_4.member_2;
+                                local_16 = _e176;
+                                let _e182 = global_3.member.member_4.member_3;
+                                let _e183 = ((((2f * _e166) * _e171) / (_e176 - _e171)) * _e182);
+                                local_17 = _e183;
+                                if (_e183 == 0f) {
                                     phi_209_ = 0f;
                                 } else {
-                                    let _e207 = local_16;
-                                    let _e208 = local_12;
-                                    let _e211 = local_17;
-                                    phi_209_ = (_e211 * (1f - (_e207 / _e208)));
+                                    let _e185 = local_16;
+                                    let _e186 = local_12;
+                                    let _e189 = local_17;
+                                    phi_209_ = (_e189 * (1f - (_e185 / _e186)));
                                 }
-                                let _e214 = phi_209_;
-                                phi_210_ = _e214;
+                                let _e192 = phi_209_;
+                                phi_210_ = _e192;
                             } else {
                                 phi_210_ = bitcast<f32>(_e105);
                             }
-                            let _e216 = phi_210_;
-                            local_18 = _e216;
-                            if (_e216 < 0f) {
-                                let _e218 = local_18;
-                                phi_216_ = -(_e218);
+                            let _e194 = phi_210_;
+                            local_18 = _e194;
+                            if (_e194 < 0f) {
+                                let _e196 = local_18;
+                                phi_216_ = -(_e196);
                             } else {
-                                phi_216_ = _e216;
+                                phi_216_ = _e194;
                             }
-                            let _e221 = phi_216_;
-                            phi_218_ = (0.5f * _e221);
+                            let _e199 = phi_216_;
+                            phi_218_ = (0.5f * _e199);
                         }
                         let _e224 = phi_218_;
                         let _e228 = select(_e224, 0f, ((bitcast<u32>(_e224) & 2147483647u) > 2139095040u));
                         local_64 = _e228;
                         if !((_e228 == _e228)) {
-                            phi_580_ = true;
+                            phi_590_ = true;
                         } else {
                             let _e231 = local_15;
                             let _e232 = local_64;
-                            phi_580_ = (_e231 <= _e232);
+                            phi_590_ = (_e231 <= _e232);
                         }
-                        let _e235 = phi_580_;
+                        let _e235 = phi_590_;
                         let _e236 = local_15;
                         let _e237 = local_64;
                         let _e238 = select(_e237, _e236, _e235);
@@ -315,11 +315,11 @@ fn function_() {
                     let _e262 = local_11;
                     phi_121_ = _e259;
                     phi_124_ = _e261;
-                    phi_587_ = false;
+                    phi_597_ = false;
                     break if !(_e262);
                 }
             }
-            let _e265 = phi_587_;
+            let _e265 = phi_597_;
             if _e265 {
                 break;
             }
@@ -374,414 +374,414 @@ fn function_() {
             let _e300 = phi_287_;
             local_20 = _e300.member_1;
             if (bitcast<i32>(_e300.member) != 0i) {
-                let _e305 = local_20;
-                let _e307 = local_20;
-                local_21 = select(firstTrailingBit(_e305), 32u, (_e307 == 0u));
-                let _e310 = local_3;
-                let _e311 = local_1;
-                let _e313 = local_4;
-                let _e314 = ((_e310 * _e311) + _e313);
-                local_22 = _e314;
-                if (_e314 < 512u) {
+                let _e356 = local_20;
+                let _e358 = local_20;
+                local_21 = select(firstTrailingBit(_e356), 32u, (_e358 == 0u));
+                let _e361 = local_3;
+                let _e362 = local_1;
+                let _e364 = local_4;
+                let _e365 = ((_e361 * _e362) + _e364);
+                local_22 = _e365;
+                if (_e365 < 512u) {
                 } else {
                     break;
                 }
-                let _e316 = local_22;
-                let _e318 = global_5[_e316];
-                phi_310_ = 1u;
-                phi_313_ = _e318;
+                let _e367 = local_22;
+                let _e369 = global_5[_e367];
+                phi_314_ = 1u;
+                phi_317_ = _e369;
                 loop {
-                    let _e320 = phi_310_;
-                    let _e322 = phi_313_;
-                    local_23 = _e320;
-                    local_24 = _e322;
-                    let _e323 = local_23;
-                    let _e324 = local_1;
-                    let _e325 = (_e323 < _e324);
-                    local_25 = _e325;
-                    if _e325 {
-                        let _e326 = local_24;
-                        let _e327 = local_23;
-                        let _e328 = subgroupShuffleUp(_e326, _e327);
-                        local_26 = _e328;
-                        let _e329 = local_4;
-                        let _e330 = local_23;
-                        if (_e329 >= _e330) {
-                            let _e332 = local_26;
-                            let _e333 = local_24;
-                            let _e335 = local_26;
-                            let _e336 = local_24;
-                            phi_331_ = select(_e336, _e335, (_e332 > _e333));
+                    let _e371 = phi_314_;
+                    let _e373 = phi_317_;
+                    local_23 = _e371;
+                    local_24 = _e373;
+                    let _e374 = local_23;
+                    let _e375 = local_1;
+                    let _e376 = (_e374 < _e375);
+                    local_25 = _e376;
+                    if _e376 {
+                        let _e377 = local_24;
+                        let _e378 = local_23;
+                        let _e379 = subgroupShuffleUp(_e377, _e378);
+                        local_26 = _e379;
+                        let _e380 = local_4;
+                        let _e381 = local_23;
+                        if (_e380 >= _e381) {
+                            let _e383 = local_26;
+                            let _e384 = local_24;
+                            let _e386 = local_26;
+                            let _e387 = local_24;
+                            phi_335_ = select(_e387, _e386, (_e383 > _e384));
                         } else {
-                            phi_331_ = _e322;
+                            phi_335_ = _e373;
                         }
-                        let _e339 = phi_331_;
-                        let _e340 = local_23;
-                        phi_311_ = (_e340 * 2u);
-                        phi_314_ = _e339;
+                        let _e390 = phi_335_;
+                        let _e391 = local_23;
+                        phi_315_ = (_e391 * 2u);
+                        phi_318_ = _e390;
                     } else {
-                        phi_311_ = u32();
-                        phi_314_ = u32();
+                        phi_315_ = u32();
+                        phi_318_ = u32();
                     }
-                    let _e343 = phi_311_;
-                    let _e345 = phi_314_;
+                    let _e394 = phi_315_;
+                    let _e396 = phi_318_;
                     continue;
                     continuing {
-                        let _e346 = local_25;
-                        phi_310_ = _e343;
-                        phi_313_ = _e345;
-                        break if !(_e346);
+                        let _e397 = local_25;
+                        phi_314_ = _e394;
+                        phi_317_ = _e396;
+                        break if !(_e397);
                     }
                 }
-                let _e348 = local_22;
-                let _e349 = (256u + _e348);
-                local_27 = _e349;
-                if (_e349 < 512u) {
+                let _e399 = local_22;
+                let _e400 = (256u + _e399);
+                local_27 = _e400;
+                if (_e400 < 512u) {
                 } else {
                     break;
                 }
-                let _e351 = local_27;
-                let _e353 = local_24;
-                global_5[_e351] = _e353;
+                let _e402 = local_27;
+                let _e404 = local_24;
+                global_5[_e402] = _e404;
                 storageBarrier();
                 workgroupBarrier();
-                phi_342_ = 0u;
-                phi_345_ = 256u;
-                phi_346_ = 256u;
-                phi_348_ = 0u;
+                phi_347_ = 0u;
+                phi_350_ = 256u;
+                phi_351_ = 256u;
+                phi_353_ = 0u;
                 loop {
-                    let _e355 = phi_342_;
-                    let _e357 = phi_345_;
-                    let _e359 = phi_346_;
-                    let _e361 = phi_348_;
-                    local_28 = _e355;
-                    local_29 = _e357;
-                    local_30 = _e359;
-                    local_31 = _e361;
-                    local_67 = _e357;
-                    local_68 = _e359;
-                    local_69 = _e361;
-                    let _e362 = local_30;
-                    let _e363 = local_20;
-                    let _e364 = (_e362 > _e363);
-                    local_32 = _e364;
-                    if _e364 {
-                        let _e365 = local_21;
-                        let _e366 = (_e365 & 31u);
-                        local_33 = _e366;
-                        let _e367 = local_30;
-                        let _e369 = (_e367 >> bitcast<u32>(_e366));
-                        local_34 = _e369;
-                        let _e370 = local_22;
-                        let _e371 = (_e370 < _e369);
-                        local_35 = _e371;
-                        if _e371 {
-                            let _e372 = local_22;
-                            let _e374 = local_33;
-                            let _e377 = local_29;
-                            let _e379 = ((_e377 + ((_e372 + 1u) << bitcast<u32>(_e374))) - 1u);
-                            local_36 = _e379;
-                            if (_e379 < 512u) {
+                    let _e406 = phi_347_;
+                    let _e408 = phi_350_;
+                    let _e410 = phi_351_;
+                    let _e412 = phi_353_;
+                    local_28 = _e406;
+                    local_29 = _e408;
+                    local_30 = _e410;
+                    local_31 = _e412;
+                    local_67 = _e408;
+                    local_68 = _e410;
+                    local_69 = _e412;
+                    let _e413 = local_30;
+                    let _e414 = local_20;
+                    let _e415 = (_e413 > _e414);
+                    local_32 = _e415;
+                    if _e415 {
+                        let _e416 = local_21;
+                        let _e417 = (_e416 & 31u);
+                        local_33 = _e417;
+                        let _e418 = local_30;
+                        let _e420 = (_e418 >> bitcast<u32>(_e417));
+                        local_34 = _e420;
+                        let _e421 = local_22;
+                        let _e422 = (_e421 < _e420);
+                        local_35 = _e422;
+                        if _e422 {
+                            let _e423 = local_22;
+                            let _e425 = local_33;
+                            let _e428 = local_29;
+                            let _e430 = ((_e428 + ((_e423 + 1u) << bitcast<u32>(_e425))) - 1u);
+                            local_36 = _e430;
+                            if (_e430 < 512u) {
                             } else {
-                                phi_613_ = true;
+                                phi_623_ = true;
                                 break;
                             }
-                            let _e381 = local_36;
-                            let _e383 = global_5[_e381];
-                            phi_376_ = _e383;
+                            let _e432 = local_36;
+                            let _e434 = global_5[_e432];
+                            phi_381_ = _e434;
                         } else {
-                            phi_376_ = 0u;
+                            phi_381_ = 0u;
                         }
-                        let _e385 = phi_376_;
-                        phi_378_ = 1u;
-                        phi_381_ = _e385;
+                        let _e436 = phi_381_;
+                        phi_387_ = 1u;
+                        phi_390_ = _e436;
                         loop {
-                            let _e387 = phi_378_;
-                            let _e389 = phi_381_;
-                            local_37 = _e387;
-                            local_38 = _e389;
-                            let _e390 = local_37;
-                            let _e391 = local_1;
-                            let _e392 = (_e390 < _e391);
-                            local_39 = _e392;
-                            if _e392 {
-                                let _e393 = local_38;
-                                let _e394 = local_37;
-                                let _e395 = subgroupShuffleUp(_e393, _e394);
-                                local_40 = _e395;
-                                let _e396 = local_4;
-                                let _e397 = local_37;
-                                if (_e396 >= _e397) {
-                                    let _e399 = local_40;
-                                    let _e400 = local_38;
-                                    let _e402 = local_40;
-                                    let _e403 = local_38;
-                                    phi_399_ = select(_e403, _e402, (_e399 > _e400));
+                            let _e438 = phi_387_;
+                            let _e440 = phi_390_;
+                            local_37 = _e438;
+                            local_38 = _e440;
+                            let _e441 = local_37;
+                            let _e442 = local_1;
+                            let _e443 = (_e441 < _e442);
+                            local_39 = _e443;
+                            if _e443 {
+                                let _e444 = local_38;
+                                let _e445 = local_37;
+                                let _e446 = subgroupShuffleUp(_e444, _e445);
+                                local_40 = _e446;
+                                let _e447 = local_4;
+                                let _e448 = local_37;
+                                if (_e447 >= _e448) {
+                                    let _e450 = local_40;
+                                    let _e451 = local_38;
+                                    let _e453 = local_40;
+                                    let _e454 = local_38;
+                                    phi_408_ = select(_e454, _e453, (_e450 > _e451));
                                 } else {
-                                    phi_399_ = _e389;
+                                    phi_408_ = _e440;
                                 }
-                                let _e406 = phi_399_;
-                                let _e407 = local_37;
-                                phi_379_ = (_e407 * 2u);
-                                phi_382_ = _e406;
+                                let _e457 = phi_408_;
+                                let _e458 = local_37;
+                                phi_388_ = (_e458 * 2u);
+                                phi_391_ = _e457;
                             } else {
-                                phi_379_ = u32();
-                                phi_382_ = u32();
+                                phi_388_ = u32();
+                                phi_391_ = u32();
                             }
-                            let _e410 = phi_379_;
-                            let _e412 = phi_382_;
+                            let _e461 = phi_388_;
+                            let _e463 = phi_391_;
                             continue;
                             continuing {
-                                let _e413 = local_39;
-                                phi_378_ = _e410;
-                                phi_381_ = _e412;
-                                break if !(_e413);
+                                let _e464 = local_39;
+                                phi_387_ = _e461;
+                                phi_390_ = _e463;
+                                break if !(_e464);
                             }
                         }
-                        let _e415 = local_35;
-                        if _e415 {
-                            let _e416 = local_28;
-                            let _e417 = local_22;
-                            let _e418 = (_e416 + _e417);
-                            local_41 = _e418;
-                            if (_e418 < 512u) {
+                        let _e466 = local_35;
+                        if _e466 {
+                            let _e467 = local_28;
+                            let _e468 = local_22;
+                            let _e469 = (_e467 + _e468);
+                            local_41 = _e469;
+                            if (_e469 < 512u) {
                             } else {
-                                phi_613_ = true;
+                                phi_623_ = true;
                                 break;
                             }
-                            let _e420 = local_41;
-                            let _e422 = local_38;
-                            global_5[_e420] = _e422;
+                            let _e471 = local_41;
+                            let _e473 = local_38;
+                            global_5[_e471] = _e473;
                         }
                         storageBarrier();
                         workgroupBarrier();
-                        let _e423 = local_28;
-                        let _e424 = local_34;
-                        let _e426 = local_31;
-                        phi_343_ = (_e423 + _e424);
-                        phi_347_ = _e369;
-                        phi_349_ = (_e426 + 1u);
+                        let _e474 = local_28;
+                        let _e475 = local_34;
+                        let _e477 = local_31;
+                        phi_348_ = (_e474 + _e475);
+                        phi_352_ = _e420;
+                        phi_354_ = (_e477 + 1u);
                     } else {
-                        phi_343_ = u32();
-                        phi_347_ = u32();
-                        phi_349_ = u32();
+                        phi_348_ = u32();
+                        phi_352_ = u32();
+                        phi_354_ = u32();
                     }
-                    let _e429 = phi_343_;
-                    let _e431 = phi_347_;
-                    let _e433 = phi_349_;
+                    let _e480 = phi_348_;
+                    let _e482 = phi_352_;
+                    let _e484 = phi_354_;
                     continue;
                     continuing {
-                        let _e434 = local_32;
-                        phi_342_ = _e429;
-                        phi_345_ = _e355;
-                        phi_346_ = _e431;
-                        phi_348_ = _e433;
-                        phi_613_ = _e265;
-                        break if !(_e434);
+                        let _e485 = local_32;
+                        phi_347_ = _e480;
+                        phi_350_ = _e406;
+                        phi_351_ = _e482;
+                        phi_353_ = _e484;
+                        phi_623_ = _e265;
+                        break if !(_e485);
                     }
                 }
-                let _e437 = phi_613_;
-                if _e437 {
+                let _e488 = phi_623_;
+                if _e488 {
                     break;
                 }
-                let _e609 = local_67;
-                phi_416_ = _e609;
-                let _e612 = local_68;
-                phi_419_ = _e612;
-                let _e615 = local_69;
-                phi_421_ = _e615;
+                let _e615 = local_67;
+                phi_426_ = _e615;
+                let _e618 = local_68;
+                phi_429_ = _e618;
+                let _e621 = local_69;
+                phi_431_ = _e621;
                 loop {
-                    let _e439 = phi_416_;
-                    let _e441 = phi_419_;
-                    let _e443 = phi_421_;
-                    local_42 = _e439;
-                    local_43 = _e441;
-                    local_44 = _e443;
-                    let _e444 = local_44;
-                    let _e445 = (_e444 > 0u);
-                    local_45 = _e445;
-                    if _e445 {
-                        let _e446 = local_21;
-                        let _e447 = (_e446 & 31u);
-                        local_46 = _e447;
-                        let _e448 = local_43;
-                        let _e450 = (_e448 << bitcast<u32>(_e447));
-                        local_47 = _e450;
-                        let _e451 = local_44;
-                        if (_e451 == 1u) {
-                            phi_436_ = 256u;
+                    let _e490 = phi_426_;
+                    let _e492 = phi_429_;
+                    let _e494 = phi_431_;
+                    local_42 = _e490;
+                    local_43 = _e492;
+                    local_44 = _e494;
+                    let _e495 = local_44;
+                    let _e496 = (_e495 > 0u);
+                    local_45 = _e496;
+                    if _e496 {
+                        let _e497 = local_21;
+                        let _e498 = (_e497 & 31u);
+                        local_46 = _e498;
+                        let _e499 = local_43;
+                        let _e501 = (_e499 << bitcast<u32>(_e498));
+                        local_47 = _e501;
+                        let _e502 = local_44;
+                        if (_e502 == 1u) {
+                            phi_446_ = 256u;
                         } else {
-                            let _e453 = local_42;
-                            let _e454 = local_47;
-                            phi_436_ = (_e453 - _e454);
+                            let _e504 = local_42;
+                            let _e505 = local_47;
+                            phi_446_ = (_e504 - _e505);
                         }
-                        let _e457 = phi_436_;
-                        local_48 = _e457;
-                        let _e458 = local;
-                        let _e459 = local_20;
-                        if (_e458 >= _e459) {
-                            let _e461 = local;
-                            let _e462 = local_47;
-                            if (_e461 < _e462) {
-                                let _e464 = local_48;
-                                let _e465 = local;
-                                local_49 = (_e464 + _e465);
-                                let _e467 = local;
-                                let _e468 = local_46;
-                                let _e471 = local_42;
-                                let _e473 = ((_e471 + (_e467 >> bitcast<u32>(_e468))) - 1u);
-                                local_50 = _e473;
-                                if (_e473 < 512u) {
+                        let _e508 = phi_446_;
+                        local_48 = _e508;
+                        let _e509 = local;
+                        let _e510 = local_20;
+                        if (_e509 >= _e510) {
+                            let _e512 = local;
+                            let _e513 = local_47;
+                            if (_e512 < _e513) {
+                                let _e515 = local_48;
+                                let _e516 = local;
+                                local_49 = (_e515 + _e516);
+                                let _e518 = local;
+                                let _e519 = local_46;
+                                let _e522 = local_42;
+                                let _e524 = ((_e522 + (_e518 >> bitcast<u32>(_e519))) - 1u);
+                                local_50 = _e524;
+                                if (_e524 < 512u) {
                                 } else {
-                                    phi_626_ = true;
+                                    phi_636_ = true;
                                     break;
                                 }
-                                let _e475 = local_50;
-                                let _e477 = global_5[_e475];
-                                local_51 = _e477;
-                                let _e478 = local_49;
-                                let _e479 = (_e478 < 512u);
-                                local_52 = _e479;
-                                if _e479 {
+                                let _e526 = local_50;
+                                let _e528 = global_5[_e526];
+                                local_51 = _e528;
+                                let _e529 = local_49;
+                                let _e530 = (_e529 < 512u);
+                                local_52 = _e530;
+                                if _e530 {
                                 } else {
-                                    phi_626_ = true;
+                                    phi_636_ = true;
                                     break;
                                 }
-                                let _e480 = local_49;
-                                let _e482 = global_5[_e480];
-                                let _e483 = local_51;
-                                let _e485 = local_51;
-                                local_65 = select(_e482, _e485, (_e483 > _e482));
-                                let _e487 = local_52;
-                                if _e487 {
+                                let _e531 = local_49;
+                                let _e533 = global_5[_e531];
+                                let _e534 = local_51;
+                                let _e536 = local_51;
+                                local_66 = select(_e533, _e536, (_e534 > _e533));
+                                let _e538 = local_52;
+                                if _e538 {
                                 } else {
-                                    phi_626_ = true;
+                                    phi_636_ = true;
                                     break;
                                 }
-                                let _e488 = local_65;
-                                global_5[_e480] = _e488;
+                                let _e539 = local_66;
+                                global_5[_e531] = _e539;
                             }
                         }
                         storageBarrier();
                         workgroupBarrier();
-                        let _e489 = local_44;
-                        phi_417_ = _e457;
-                        phi_420_ = _e450;
-                        phi_422_ = (_e489 - 1u);
+                        let _e540 = local_44;
+                        phi_427_ = _e508;
+                        phi_430_ = _e501;
+                        phi_432_ = (_e540 - 1u);
                     } else {
-                        phi_417_ = u32();
-                        phi_420_ = u32();
-                        phi_422_ = u32();
+                        phi_427_ = u32();
+                        phi_430_ = u32();
+                        phi_432_ = u32();
                     }
-                    let _e492 = phi_417_;
-                    let _e494 = phi_420_;
-                    let _e496 = phi_422_;
+                    let _e543 = phi_427_;
+                    let _e545 = phi_430_;
+                    let _e547 = phi_432_;
                     continue;
                     continuing {
-                        let _e497 = local_45;
-                        phi_416_ = _e492;
-                        phi_419_ = _e494;
-                        phi_421_ = _e496;
-                        phi_626_ = _e437;
-                        break if !(_e497);
-                    }
-                }
-                let _e500 = phi_626_;
-                if _e500 {
-                    break;
-                }
-                phi_535_ = 256u;
-            } else {
-                phi_477_ = 1u;
-                phi_480_ = 0u;
-                loop {
-                    let _e502 = phi_477_;
-                    let _e504 = phi_480_;
-                    local_53 = _e502;
-                    local_54 = _e504;
-                    local_70 = _e504;
-                    let _e505 = local_53;
-                    let _e506 = (_e505 < 256u);
-                    local_55 = _e506;
-                    if _e506 {
-                        let _e507 = local_54;
-                        let _e509 = select(0u, 256u, (_e507 == 0u));
-                        local_66 = _e509;
-                        let _e510 = local_54;
-                        let _e511 = local;
-                        let _e512 = (_e510 + _e511);
-                        local_56 = _e512;
-                        if (_e512 < 512u) {
-                        } else {
-                            phi_602_ = true;
-                            break;
-                        }
-                        let _e514 = local_56;
-                        let _e516 = global_5[_e514];
-                        local_57 = _e516;
-                        let _e517 = local;
-                        let _e518 = local_53;
-                        if (_e517 >= _e518) {
-                            let _e520 = local;
-                            let _e521 = local_53;
-                            let _e523 = local_54;
-                            let _e524 = (_e523 + (_e520 - _e521));
-                            local_58 = _e524;
-                            if (_e524 < 512u) {
-                            } else {
-                                phi_602_ = true;
-                                break;
-                            }
-                            let _e526 = local_58;
-                            let _e528 = global_5[_e526];
-                            let _e529 = local_57;
-                            let _e531 = local_57;
-                            phi_520_ = select(_e531, _e528, (_e528 > _e529));
-                        } else {
-                            phi_520_ = _e516;
-                        }
-                        let _e534 = phi_520_;
-                        local_59 = _e534;
-                        let _e535 = local_66;
-                        let _e536 = local;
-                        let _e537 = (_e535 + _e536);
-                        local_60 = _e537;
-                        if (_e537 < 512u) {
-                        } else {
-                            phi_602_ = true;
-                            break;
-                        }
-                        let _e539 = local_60;
-                        let _e541 = local_59;
-                        global_5[_e539] = _e541;
-                        storageBarrier();
-                        workgroupBarrier();
-                        let _e542 = local_53;
-                        phi_478_ = (_e542 * 2u);
-                        phi_481_ = _e509;
-                    } else {
-                        phi_478_ = u32();
-                        phi_481_ = u32();
-                    }
-                    let _e545 = phi_478_;
-                    let _e547 = phi_481_;
-                    continue;
-                    continuing {
-                        let _e548 = local_55;
-                        phi_477_ = _e545;
-                        phi_480_ = _e547;
-                        phi_602_ = _e265;
+                        let _e548 = local_45;
+                        phi_426_ = _e543;
+                        phi_429_ = _e545;
+                        phi_431_ = _e547;
+                        phi_636_ = _e488;
                         break if !(_e548);
                     }
                 }
-                let _e551 = phi_602_;
+                let _e551 = phi_636_;
                 if _e551 {
                     break;
                 }
+                phi_545_ = 256u;
+            } else {
+                phi_487_ = 1u;
+                phi_490_ = 0u;
+                loop {
+                    let _e306 = phi_487_;
+                    let _e308 = phi_490_;
+                    local_53 = _e306;
+                    local_54 = _e308;
+                    local_70 = _e308;
+                    let _e309 = local_53;
+                    let _e310 = (_e309 < 256u);
+                    local_55 = _e310;
+                    if _e310 {
+                        let _e311 = local_54;
+                        let _e313 = select(0u, 256u, (_e311 == 0u));
+                        local_65 = _e313;
+                        let _e314 = local_54;
+                        let _e315 = local;
+                        let _e316 = (_e314 + _e315);
+                        local_56 = _e316;
+                        if (_e316 < 512u) {
+                        } else {
+                            phi_612_ = true;
+                            break;
+                        }
+                        let _e318 = local_56;
+                        let _e320 = global_5[_e318];
+                        local_57 = _e320;
+                        let _e321 = local;
+                        let _e322 = local_53;
+                        if (_e321 >= _e322) {
+                            let _e324 = local;
+                            let _e325 = local_53;
+                            let _e327 = local_54;
+                            let _e328 = (_e327 + (_e324 - _e325));
+                            local_58 = _e328;
+                            if (_e328 < 512u) {
+                            } else {
+                                phi_612_ = true;
+                                break;
+                            }
+                            let _e330 = local_58;
+                            let _e332 = global_5[_e330];
+                            let _e333 = local_57;
+                            let _e335 = local_57;
+                            phi_530_ = select(_e335, _e332, (_e332 > _e333));
+                        } else {
+                            phi_530_ = _e320;
+                        }
+                        let _e338 = phi_530_;
+                        local_59 = _e338;
+                        let _e339 = local_65;
+                        let _e340 = local;
+                        let _e341 = (_e339 + _e340);
+                        local_60 = _e341;
+                        if (_e341 < 512u) {
+                        } else {
+                            phi_612_ = true;
+                            break;
+                        }
+                        let _e343 = local_60;
+                        let _e345 = local_59;
+                        global_5[_e343] = _e345;
+                        storageBarrier();
+                        workgroupBarrier();
+                        let _e346 = local_53;
+                        phi_488_ = (_e346 * 2u);
+                        phi_491_ = _e313;
+                    } else {
+                        phi_488_ = u32();
+                        phi_491_ = u32();
+                    }
+                    let _e349 = phi_488_;
+                    let _e351 = phi_491_;
+                    continue;
+                    continuing {
+                        let _e352 = local_55;
+                        phi_487_ = _e349;
+                        phi_490_ = _e351;
+                        phi_612_ = _e265;
+                        break if !(_e352);
+                    }
+                }
+                let _e355 = phi_612_;
+                if _e355 {
+                    break;
+                }
                 let _e629 = local_70;
-                phi_535_ = _e629;
+                phi_545_ = _e629;
             }
-            let _e553 = phi_535_;
+            let _e553 = phi_545_;
             local_61 = _e553;
             let _e554 = local;
             if (_e554 == 255u) {

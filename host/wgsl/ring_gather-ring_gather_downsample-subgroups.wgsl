@@ -741,7 +741,7 @@ fn function_() {
     var local_650: array<f32, 4>;
     var phi_330_: u32;
     var phi_348_: u32;
-    var phi_5929_: bool;
+    var phi_5944_: bool;
     var phi_367_: u32;
     var phi_370_: array<f32, 4>;
     var phi_372_: array<f32, 3>;
@@ -777,10 +777,10 @@ fn function_() {
     var phi_653_: f32;
     var phi_687_: u32;
     var phi_688_: u32;
-    var phi_5898_: bool;
-    var phi_5945_: bool;
+    var phi_5928_: bool;
+    var phi_5975_: bool;
     var phi_759_: type_25;
-    var phi_5939_: bool;
+    var phi_5969_: bool;
     var phi_879_: array<f32, 4>;
     var phi_880_: array<f32, 3>;
     var phi_881_: f32;
@@ -791,7 +791,7 @@ fn function_() {
     var phi_886_: array<f32, 2>;
     var phi_887_: u32;
     var phi_888_: f32;
-    var phi_5938_: bool;
+    var phi_5968_: bool;
     var phi_889_: array<f32, 4>;
     var phi_890_: array<f32, 3>;
     var phi_891_: f32;
@@ -802,7 +802,7 @@ fn function_() {
     var phi_896_: array<f32, 2>;
     var phi_897_: u32;
     var phi_898_: f32;
-    var phi_5937_: bool;
+    var phi_5967_: bool;
     var phi_899_: array<f32, 4>;
     var phi_900_: array<f32, 3>;
     var phi_901_: f32;
@@ -813,7 +813,7 @@ fn function_() {
     var phi_906_: array<f32, 2>;
     var phi_907_: u32;
     var phi_908_: f32;
-    var phi_5936_: bool;
+    var phi_5966_: bool;
     var phi_368_: u32;
     var phi_371_: array<f32, 4>;
     var phi_373_: array<f32, 3>;
@@ -825,7 +825,7 @@ fn function_() {
     var phi_385_: array<f32, 2>;
     var phi_387_: u32;
     var phi_389_: f32;
-    var phi_5935_: bool;
+    var phi_5965_: bool;
     var phi_939_: array<f32, 3>;
     var phi_940_: f32;
     var phi_942_: array<f32, 3>;
@@ -840,17 +840,17 @@ fn function_() {
     var phi_1037_: f32;
     var phi_991_: u32;
     var phi_994_: f32;
-    var phi_5946_: bool;
-    var phi_5959_: bool;
+    var phi_5976_: bool;
+    var phi_5989_: bool;
     var phi_1043_: f32;
     var phi_1044_: f32;
     var phi_1045_: array<f32, 2>;
-    var phi_5958_: bool;
+    var phi_5988_: bool;
     var phi_1047_: type_30;
     var phi_1070_: u32;
     var phi_1071_: u32;
-    var phi_5955_: bool;
-    var phi_5999_: bool;
+    var phi_5985_: bool;
+    var phi_5994_: bool;
     var phi_1115_: u32;
     var phi_1118_: u32;
     var phi_1120_: array<f32, 3>;
@@ -915,13 +915,13 @@ fn function_() {
     var phi_1141_: u32;
     var phi_1143_: array<f32, 3>;
     var phi_1145_: f32;
-    var phi_5960_: bool;
-    var phi_6006_: bool;
+    var phi_5990_: bool;
+    var phi_6036_: bool;
     var phi_1116_: u32;
     var phi_1119_: u32;
     var phi_1121_: array<f32, 3>;
     var phi_1123_: f32;
-    var phi_6005_: bool;
+    var phi_6035_: bool;
     var phi_1493_: u32;
     var phi_1562_: bool;
     var phi_1576_: bool;
@@ -948,17 +948,17 @@ fn function_() {
     var phi_1779_: f32;
     var phi_1846_: f32;
     var phi_1494_: u32;
-    var phi_6007_: bool;
-    var phi_6232_: bool;
-    var phi_6150_: f32;
-    var phi_6102_: f32;
-    var phi_6054_: f32;
+    var phi_6037_: bool;
+    var phi_6249_: bool;
+    var phi_6180_: f32;
+    var phi_6132_: f32;
+    var phi_6084_: f32;
     var phi_1898_: bool;
     var phi_1899_: bool;
     var phi_1900_: bool;
     var phi_1901_: bool;
     var phi_1902_: bool;
-    var phi_6229_: bool;
+    var phi_6244_: bool;
     var phi_1914_: u32;
     var phi_1917_: array<f32, 4>;
     var phi_1919_: array<f32, 3>;
@@ -994,10 +994,10 @@ fn function_() {
     var phi_2200_: f32;
     var phi_2246_: u32;
     var phi_2247_: u32;
-    var phi_6198_: bool;
-    var phi_6248_: bool;
+    var phi_6228_: bool;
+    var phi_6278_: bool;
     var phi_2318_: type_25;
-    var phi_6242_: bool;
+    var phi_6272_: bool;
     var phi_2438_: array<f32, 4>;
     var phi_2439_: array<f32, 3>;
     var phi_2440_: f32;
@@ -1008,7 +1008,7 @@ fn function_() {
     var phi_2445_: array<f32, 2>;
     var phi_2446_: u32;
     var phi_2447_: f32;
-    var phi_6241_: bool;
+    var phi_6271_: bool;
     var phi_2448_: array<f32, 4>;
     var phi_2449_: array<f32, 3>;
     var phi_2450_: f32;
@@ -1019,7 +1019,7 @@ fn function_() {
     var phi_2455_: array<f32, 2>;
     var phi_2456_: u32;
     var phi_2457_: f32;
-    var phi_6240_: bool;
+    var phi_6270_: bool;
     var phi_2458_: array<f32, 4>;
     var phi_2459_: array<f32, 3>;
     var phi_2460_: f32;
@@ -1030,7 +1030,7 @@ fn function_() {
     var phi_2465_: array<f32, 2>;
     var phi_2466_: u32;
     var phi_2467_: f32;
-    var phi_6239_: bool;
+    var phi_6269_: bool;
     var phi_1915_: u32;
     var phi_1918_: array<f32, 4>;
     var phi_1920_: array<f32, 3>;
@@ -1042,7 +1042,7 @@ fn function_() {
     var phi_1932_: array<f32, 2>;
     var phi_1934_: u32;
     var phi_1936_: f32;
-    var phi_6238_: bool;
+    var phi_6268_: bool;
     var phi_2498_: array<f32, 3>;
     var phi_2499_: f32;
     var phi_2501_: array<f32, 3>;
@@ -1057,26 +1057,26 @@ fn function_() {
     var phi_2596_: f32;
     var phi_2550_: u32;
     var phi_2553_: f32;
-    var phi_6249_: bool;
-    var phi_6276_: bool;
+    var phi_6279_: bool;
+    var phi_6301_: bool;
     var phi_2602_: f32;
     var phi_2603_: f32;
     var phi_2604_: array<f32, 2>;
-    var phi_6275_: bool;
+    var phi_6300_: bool;
     var phi_2606_: type_30;
     var phi_2622_: f32;
     var phi_2628_: f32;
-    var phi_6271_: bool;
+    var phi_6296_: bool;
     var phi_2631_: f32;
-    var phi_6270_: bool;
+    var phi_6295_: bool;
     var phi_2633_: f32;
     var phi_2634_: f32;
     var phi_2635_: u32;
-    var phi_6269_: bool;
+    var phi_6294_: bool;
     var phi_2636_: f32;
     var phi_2637_: f32;
     var phi_2638_: u32;
-    var phi_6268_: bool;
+    var phi_6293_: bool;
     var phi_2639_: f32;
     var phi_2640_: f32;
     var phi_2641_: u32;
@@ -1086,385 +1086,385 @@ fn function_() {
     var phi_2684_: type_34;
     var phi_2685_: bool;
     var phi_2690_: type_34;
-    var phi_2830_: u32;
-    var phi_2833_: u32;
-    var phi_2869_: u32;
-    var phi_2831_: u32;
-    var phi_2834_: u32;
-    var phi_6258_: bool;
-    var phi_2722_: u32;
-    var phi_2725_: u32;
-    var phi_2726_: u32;
-    var phi_2728_: u32;
-    var phi_2756_: u32;
-    var phi_2723_: u32;
+    var phi_2840_: u32;
+    var phi_2843_: u32;
+    var phi_2879_: u32;
+    var phi_2841_: u32;
+    var phi_2844_: u32;
+    var phi_6288_: bool;
     var phi_2727_: u32;
-    var phi_2729_: u32;
-    var phi_6278_: bool;
-    var phi_2773_: u32;
-    var phi_2776_: u32;
-    var phi_2778_: u32;
-    var phi_2793_: u32;
-    var phi_2774_: u32;
-    var phi_2777_: u32;
-    var phi_2779_: u32;
-    var phi_6283_: bool;
-    var phi_6300_: bool;
-    var phi_2884_: u32;
-    var phi_2901_: type_34;
-    var phi_2903_: type_34;
-    var phi_2904_: bool;
-    var phi_2905_: type_34;
-    var phi_2906_: bool;
+    var phi_2730_: u32;
+    var phi_2731_: u32;
+    var phi_2733_: u32;
+    var phi_2761_: u32;
+    var phi_2728_: u32;
+    var phi_2732_: u32;
+    var phi_2734_: u32;
+    var phi_6308_: bool;
+    var phi_2783_: u32;
+    var phi_2786_: u32;
+    var phi_2788_: u32;
+    var phi_2803_: u32;
+    var phi_2784_: u32;
+    var phi_2787_: u32;
+    var phi_2789_: u32;
+    var phi_6313_: bool;
+    var phi_6324_: bool;
+    var phi_2894_: u32;
     var phi_2911_: type_34;
-    var phi_3101_: u32;
-    var phi_3104_: u32;
-    var phi_3144_: u32;
-    var phi_3102_: u32;
-    var phi_3105_: u32;
-    var phi_6289_: bool;
-    var phi_2934_: u32;
-    var phi_2937_: u32;
-    var phi_2955_: u32;
-    var phi_2935_: u32;
-    var phi_2938_: u32;
-    var phi_2966_: u32;
+    var phi_2913_: type_34;
+    var phi_2914_: bool;
+    var phi_2915_: type_34;
+    var phi_2916_: bool;
+    var phi_2921_: type_34;
+    var phi_3121_: u32;
+    var phi_3124_: u32;
+    var phi_3164_: u32;
+    var phi_3122_: u32;
+    var phi_3125_: u32;
+    var phi_6319_: bool;
+    var phi_2948_: u32;
+    var phi_2951_: u32;
     var phi_2969_: u32;
-    var phi_2970_: u32;
-    var phi_2972_: u32;
-    var phi_3000_: u32;
-    var phi_3002_: u32;
-    var phi_3005_: u32;
-    var phi_3023_: u32;
-    var phi_3003_: u32;
-    var phi_3006_: u32;
-    var phi_2967_: u32;
-    var phi_2971_: u32;
-    var phi_2973_: u32;
-    var phi_6301_: bool;
-    var phi_3040_: u32;
-    var phi_3043_: u32;
-    var phi_3045_: u32;
+    var phi_2949_: u32;
+    var phi_2952_: u32;
+    var phi_2981_: u32;
+    var phi_2984_: u32;
+    var phi_2985_: u32;
+    var phi_2987_: u32;
+    var phi_3015_: u32;
+    var phi_3021_: u32;
+    var phi_3024_: u32;
+    var phi_3042_: u32;
+    var phi_3022_: u32;
+    var phi_3025_: u32;
+    var phi_2982_: u32;
+    var phi_2986_: u32;
+    var phi_2988_: u32;
+    var phi_6331_: bool;
     var phi_3060_: u32;
-    var phi_3041_: u32;
-    var phi_3044_: u32;
-    var phi_3046_: u32;
-    var phi_6314_: bool;
-    var phi_6332_: bool;
-    var phi_3159_: u32;
-    var phi_3176_: type_34;
-    var phi_3178_: type_34;
-    var phi_3179_: bool;
-    var phi_3180_: type_34;
-    var phi_3181_: bool;
-    var phi_3186_: type_34;
-    var phi_3376_: u32;
-    var phi_3379_: u32;
-    var phi_3419_: u32;
-    var phi_3377_: u32;
-    var phi_3380_: u32;
-    var phi_6321_: bool;
-    var phi_3209_: u32;
-    var phi_3212_: u32;
-    var phi_3230_: u32;
-    var phi_3210_: u32;
-    var phi_3213_: u32;
-    var phi_3241_: u32;
-    var phi_3244_: u32;
-    var phi_3245_: u32;
-    var phi_3247_: u32;
-    var phi_3275_: u32;
-    var phi_3277_: u32;
-    var phi_3280_: u32;
-    var phi_3298_: u32;
-    var phi_3278_: u32;
-    var phi_3281_: u32;
-    var phi_3242_: u32;
-    var phi_3246_: u32;
-    var phi_3248_: u32;
-    var phi_6333_: bool;
-    var phi_3315_: u32;
-    var phi_3318_: u32;
-    var phi_3320_: u32;
-    var phi_3335_: u32;
-    var phi_3316_: u32;
-    var phi_3319_: u32;
-    var phi_3321_: u32;
-    var phi_6346_: bool;
-    var phi_6396_: bool;
-    var phi_3434_: u32;
-    var phi_3452_: u32;
-    var phi_3468_: u32;
-    var phi_3494_: u32;
-    var phi_6392_: bool;
-    var phi_3510_: u32;
-    var phi_3513_: u32;
-    var phi_3515_: array<f32, 3>;
-    var phi_3517_: f32;
-    var phi_3532_: u32;
-    var phi_3535_: u32;
-    var phi_3537_: array<f32, 3>;
-    var phi_3539_: f32;
-    var phi_3567_: i32;
-    var phi_3568_: i32;
-    var phi_3569_: i32;
-    var phi_3570_: i32;
-    var phi_3571_: bool;
-    var phi_3594_: i32;
-    var phi_3595_: i32;
-    var phi_3596_: bool;
+    var phi_3063_: u32;
+    var phi_3065_: u32;
+    var phi_3080_: u32;
+    var phi_3061_: u32;
+    var phi_3064_: u32;
+    var phi_3066_: u32;
+    var phi_6344_: bool;
+    var phi_6356_: bool;
+    var phi_3179_: u32;
+    var phi_3196_: type_34;
+    var phi_3198_: type_34;
+    var phi_3199_: bool;
+    var phi_3200_: type_34;
+    var phi_3201_: bool;
+    var phi_3206_: type_34;
+    var phi_3406_: u32;
+    var phi_3409_: u32;
+    var phi_3449_: u32;
+    var phi_3407_: u32;
+    var phi_3410_: u32;
+    var phi_6351_: bool;
+    var phi_3233_: u32;
+    var phi_3236_: u32;
+    var phi_3254_: u32;
+    var phi_3234_: u32;
+    var phi_3237_: u32;
+    var phi_3266_: u32;
+    var phi_3269_: u32;
+    var phi_3270_: u32;
+    var phi_3272_: u32;
+    var phi_3300_: u32;
+    var phi_3306_: u32;
+    var phi_3309_: u32;
+    var phi_3327_: u32;
+    var phi_3307_: u32;
+    var phi_3310_: u32;
+    var phi_3267_: u32;
+    var phi_3271_: u32;
+    var phi_3273_: u32;
+    var phi_6363_: bool;
+    var phi_3345_: u32;
+    var phi_3348_: u32;
+    var phi_3350_: u32;
+    var phi_3365_: u32;
+    var phi_3346_: u32;
+    var phi_3349_: u32;
+    var phi_3351_: u32;
+    var phi_6376_: bool;
+    var phi_6391_: bool;
+    var phi_3464_: u32;
+    var phi_3482_: u32;
+    var phi_3498_: u32;
+    var phi_3524_: u32;
+    var phi_6387_: bool;
+    var phi_3540_: u32;
+    var phi_3543_: u32;
+    var phi_3545_: array<f32, 3>;
+    var phi_3547_: f32;
+    var phi_3562_: u32;
+    var phi_3565_: u32;
+    var phi_3567_: array<f32, 3>;
+    var phi_3569_: f32;
     var phi_3597_: i32;
     var phi_3598_: i32;
-    var phi_3599_: bool;
-    var phi_3669_: bool;
-    var phi_3683_: bool;
-    var phi_3688_: f32;
-    var phi_3698_: bool;
-    var phi_3712_: bool;
-    var phi_3717_: f32;
-    var phi_3727_: bool;
-    var phi_3741_: bool;
-    var phi_3746_: f32;
-    var phi_3780_: bool;
-    var phi_3786_: type_23;
-    var phi_3788_: type_23;
-    var phi_3789_: bool;
-    var phi_3790_: type_23;
-    var phi_3791_: bool;
-    var phi_3792_: type_23;
-    var phi_3793_: bool;
-    var phi_3798_: type_23;
-    var phi_3838_: u32;
-    var phi_3839_: array<f32, 3>;
-    var phi_3840_: u32;
-    var phi_3841_: array<f32, 3>;
-    var phi_3842_: f32;
-    var phi_3843_: u32;
-    var phi_3844_: array<f32, 3>;
-    var phi_3845_: f32;
-    var phi_3846_: u32;
-    var phi_3847_: array<f32, 3>;
-    var phi_3848_: f32;
-    var phi_3849_: u32;
-    var phi_3850_: array<f32, 3>;
-    var phi_3851_: f32;
-    var phi_3852_: u32;
-    var phi_3853_: array<f32, 3>;
-    var phi_3854_: f32;
-    var phi_3855_: u32;
-    var phi_3856_: array<f32, 3>;
-    var phi_3857_: f32;
-    var phi_3858_: u32;
-    var phi_3859_: array<f32, 3>;
-    var phi_3860_: f32;
-    var phi_3533_: u32;
-    var phi_3536_: u32;
-    var phi_3538_: array<f32, 3>;
-    var phi_3540_: f32;
-    var phi_6353_: bool;
-    var phi_6401_: bool;
-    var phi_3511_: u32;
-    var phi_3514_: u32;
-    var phi_3516_: array<f32, 3>;
-    var phi_3518_: f32;
-    var phi_6400_: bool;
+    var phi_3599_: i32;
+    var phi_3600_: i32;
+    var phi_3601_: bool;
+    var phi_3624_: i32;
+    var phi_3625_: i32;
+    var phi_3626_: bool;
+    var phi_3627_: i32;
+    var phi_3628_: i32;
+    var phi_3629_: bool;
+    var phi_3699_: bool;
+    var phi_3713_: bool;
+    var phi_3718_: f32;
+    var phi_3728_: bool;
+    var phi_3742_: bool;
+    var phi_3747_: f32;
+    var phi_3757_: bool;
+    var phi_3771_: bool;
+    var phi_3776_: f32;
+    var phi_3810_: bool;
+    var phi_3816_: type_23;
+    var phi_3818_: type_23;
+    var phi_3819_: bool;
+    var phi_3820_: type_23;
+    var phi_3821_: bool;
+    var phi_3822_: type_23;
+    var phi_3823_: bool;
+    var phi_3828_: type_23;
+    var phi_3868_: u32;
+    var phi_3869_: array<f32, 3>;
+    var phi_3870_: u32;
+    var phi_3871_: array<f32, 3>;
+    var phi_3872_: f32;
+    var phi_3873_: u32;
+    var phi_3874_: array<f32, 3>;
+    var phi_3875_: f32;
+    var phi_3876_: u32;
+    var phi_3877_: array<f32, 3>;
+    var phi_3878_: f32;
+    var phi_3879_: u32;
+    var phi_3880_: array<f32, 3>;
+    var phi_3881_: f32;
+    var phi_3882_: u32;
+    var phi_3883_: array<f32, 3>;
+    var phi_3884_: f32;
+    var phi_3885_: u32;
+    var phi_3886_: array<f32, 3>;
+    var phi_3887_: f32;
     var phi_3888_: u32;
-    var phi_3957_: bool;
-    var phi_3971_: bool;
-    var phi_3976_: f32;
-    var phi_3986_: bool;
-    var phi_4000_: bool;
-    var phi_4005_: f32;
-    var phi_4015_: bool;
-    var phi_4029_: bool;
-    var phi_4034_: f32;
-    var phi_4068_: bool;
-    var phi_4074_: type_23;
-    var phi_4076_: type_23;
-    var phi_4077_: bool;
-    var phi_4078_: type_23;
-    var phi_4079_: bool;
-    var phi_4080_: type_23;
-    var phi_4081_: bool;
-    var phi_4086_: type_23;
-    var phi_4126_: bool;
-    var phi_4154_: f32;
-    var phi_4155_: f32;
-    var phi_4157_: f32;
-    var phi_4174_: f32;
-    var phi_4241_: f32;
-    var phi_3889_: u32;
-    var phi_6402_: bool;
-    var phi_6625_: bool;
-    var phi_6545_: f32;
-    var phi_6497_: f32;
-    var phi_6449_: f32;
-    var phi_6624_: bool;
-    var phi_4280_: u32;
-    var phi_4283_: array<f32, 4>;
-    var phi_4285_: array<f32, 3>;
-    var phi_4287_: f32;
-    var phi_4289_: array<f32, 4>;
-    var phi_4291_: f32;
-    var phi_4293_: f32;
-    var phi_4295_: array<f32, 3>;
-    var phi_4297_: array<f32, 2>;
-    var phi_4299_: u32;
-    var phi_4301_: f32;
-    var phi_4369_: bool;
-    var phi_4383_: bool;
-    var phi_4388_: f32;
-    var phi_4398_: bool;
-    var phi_4412_: bool;
-    var phi_4417_: f32;
-    var phi_4427_: bool;
-    var phi_4441_: bool;
-    var phi_4446_: f32;
-    var phi_4480_: bool;
-    var phi_4486_: type_23;
-    var phi_4488_: type_23;
-    var phi_4489_: bool;
-    var phi_4490_: type_23;
-    var phi_4491_: bool;
-    var phi_4492_: type_23;
-    var phi_4493_: bool;
-    var phi_4498_: type_23;
-    var phi_4535_: bool;
-    var phi_4563_: f32;
-    var phi_4564_: f32;
-    var phi_4566_: f32;
-    var phi_4612_: u32;
-    var phi_4613_: u32;
-    var phi_6593_: bool;
-    var phi_6639_: bool;
-    var phi_4684_: type_25;
-    var phi_6633_: bool;
-    var phi_4804_: array<f32, 4>;
-    var phi_4805_: array<f32, 3>;
-    var phi_4806_: f32;
-    var phi_4807_: array<f32, 4>;
-    var phi_4808_: f32;
-    var phi_4809_: f32;
-    var phi_4810_: array<f32, 3>;
-    var phi_4811_: array<f32, 2>;
-    var phi_4812_: u32;
-    var phi_4813_: f32;
-    var phi_6632_: bool;
-    var phi_4814_: array<f32, 4>;
-    var phi_4815_: array<f32, 3>;
-    var phi_4816_: f32;
-    var phi_4817_: array<f32, 4>;
-    var phi_4818_: f32;
-    var phi_4819_: f32;
-    var phi_4820_: array<f32, 3>;
-    var phi_4821_: array<f32, 2>;
-    var phi_4822_: u32;
-    var phi_4823_: f32;
-    var phi_6631_: bool;
-    var phi_4824_: array<f32, 4>;
-    var phi_4825_: array<f32, 3>;
-    var phi_4826_: f32;
-    var phi_4827_: array<f32, 4>;
-    var phi_4828_: f32;
-    var phi_4829_: f32;
-    var phi_4830_: array<f32, 3>;
-    var phi_4831_: array<f32, 2>;
-    var phi_4832_: u32;
-    var phi_4833_: f32;
-    var phi_6630_: bool;
-    var phi_4281_: u32;
-    var phi_4284_: array<f32, 4>;
-    var phi_4286_: array<f32, 3>;
-    var phi_4288_: f32;
-    var phi_4290_: array<f32, 4>;
-    var phi_4292_: f32;
-    var phi_4294_: f32;
-    var phi_4296_: array<f32, 3>;
-    var phi_4298_: array<f32, 2>;
-    var phi_4300_: u32;
-    var phi_4302_: f32;
-    var phi_6629_: bool;
-    var phi_4864_: array<f32, 3>;
-    var phi_4865_: f32;
-    var phi_4867_: array<f32, 3>;
-    var phi_4868_: f32;
-    var phi_4869_: bool;
-    var phi_4873_: array<f32, 3>;
-    var phi_4889_: array<f32, 3>;
-    var phi_4890_: f32;
-    var phi_4896_: f32;
-    var phi_4915_: u32;
-    var phi_4918_: f32;
-    var phi_4962_: f32;
-    var phi_4916_: u32;
-    var phi_4919_: f32;
+    var phi_3889_: array<f32, 3>;
+    var phi_3890_: f32;
+    var phi_3563_: u32;
+    var phi_3566_: u32;
+    var phi_3568_: array<f32, 3>;
+    var phi_3570_: f32;
+    var phi_6383_: bool;
+    var phi_6431_: bool;
+    var phi_3541_: u32;
+    var phi_3544_: u32;
+    var phi_3546_: array<f32, 3>;
+    var phi_3548_: f32;
+    var phi_6430_: bool;
+    var phi_3918_: u32;
+    var phi_3987_: bool;
+    var phi_4001_: bool;
+    var phi_4006_: f32;
+    var phi_4016_: bool;
+    var phi_4030_: bool;
+    var phi_4035_: f32;
+    var phi_4045_: bool;
+    var phi_4059_: bool;
+    var phi_4064_: f32;
+    var phi_4098_: bool;
+    var phi_4104_: type_23;
+    var phi_4106_: type_23;
+    var phi_4107_: bool;
+    var phi_4108_: type_23;
+    var phi_4109_: bool;
+    var phi_4110_: type_23;
+    var phi_4111_: bool;
+    var phi_4116_: type_23;
+    var phi_4156_: bool;
+    var phi_4184_: f32;
+    var phi_4185_: f32;
+    var phi_4187_: f32;
+    var phi_4204_: f32;
+    var phi_4271_: f32;
+    var phi_3919_: u32;
+    var phi_6432_: bool;
     var phi_6640_: bool;
-    var phi_6653_: bool;
-    var phi_4968_: f32;
-    var phi_4969_: f32;
-    var phi_4970_: array<f32, 2>;
-    var phi_6652_: bool;
-    var phi_4972_: type_30;
-    var phi_4995_: u32;
-    var phi_4996_: u32;
-    var phi_6649_: bool;
-    var phi_5035_: f32;
-    var phi_5043_: f32;
-    var phi_5725_: f32;
-    var phi_5726_: f32;
-    var phi_5745_: f32;
-    var phi_5757_: f32;
-    var phi_5758_: f32;
-    var phi_5766_: f32;
-    var phi_5774_: f32;
-    var phi_5775_: f32;
-    var phi_5787_: bool;
-    var phi_5814_: f32;
-    var phi_5818_: f32;
-    var phi_5819_: f32;
-    var phi_5824_: f32;
-    var phi_5828_: f32;
-    var phi_5829_: f32;
-    var phi_6684_: bool;
-    var phi_5120_: type_31;
+    var phi_6575_: f32;
+    var phi_6527_: f32;
+    var phi_6479_: f32;
+    var phi_6639_: bool;
+    var phi_4310_: u32;
+    var phi_4313_: array<f32, 4>;
+    var phi_4315_: array<f32, 3>;
+    var phi_4317_: f32;
+    var phi_4319_: array<f32, 4>;
+    var phi_4321_: f32;
+    var phi_4323_: f32;
+    var phi_4325_: array<f32, 3>;
+    var phi_4327_: array<f32, 2>;
+    var phi_4329_: u32;
+    var phi_4331_: f32;
+    var phi_4399_: bool;
+    var phi_4413_: bool;
+    var phi_4418_: f32;
+    var phi_4428_: bool;
+    var phi_4442_: bool;
+    var phi_4447_: f32;
+    var phi_4457_: bool;
+    var phi_4471_: bool;
+    var phi_4476_: f32;
+    var phi_4510_: bool;
+    var phi_4516_: type_23;
+    var phi_4518_: type_23;
+    var phi_4519_: bool;
+    var phi_4520_: type_23;
+    var phi_4521_: bool;
+    var phi_4522_: type_23;
+    var phi_4523_: bool;
+    var phi_4528_: type_23;
+    var phi_4565_: bool;
+    var phi_4593_: f32;
+    var phi_4594_: f32;
+    var phi_4596_: f32;
+    var phi_4642_: u32;
+    var phi_4643_: u32;
+    var phi_6623_: bool;
+    var phi_6669_: bool;
+    var phi_4714_: type_25;
+    var phi_6663_: bool;
+    var phi_4834_: array<f32, 4>;
+    var phi_4835_: array<f32, 3>;
+    var phi_4836_: f32;
+    var phi_4837_: array<f32, 4>;
+    var phi_4838_: f32;
+    var phi_4839_: f32;
+    var phi_4840_: array<f32, 3>;
+    var phi_4841_: array<f32, 2>;
+    var phi_4842_: u32;
+    var phi_4843_: f32;
+    var phi_6662_: bool;
+    var phi_4844_: array<f32, 4>;
+    var phi_4845_: array<f32, 3>;
+    var phi_4846_: f32;
+    var phi_4847_: array<f32, 4>;
+    var phi_4848_: f32;
+    var phi_4849_: f32;
+    var phi_4850_: array<f32, 3>;
+    var phi_4851_: array<f32, 2>;
+    var phi_4852_: u32;
+    var phi_4853_: f32;
+    var phi_6661_: bool;
+    var phi_4854_: array<f32, 4>;
+    var phi_4855_: array<f32, 3>;
+    var phi_4856_: f32;
+    var phi_4857_: array<f32, 4>;
+    var phi_4858_: f32;
+    var phi_4859_: f32;
+    var phi_4860_: array<f32, 3>;
+    var phi_4861_: array<f32, 2>;
+    var phi_4862_: u32;
+    var phi_4863_: f32;
+    var phi_6660_: bool;
+    var phi_4311_: u32;
+    var phi_4314_: array<f32, 4>;
+    var phi_4316_: array<f32, 3>;
+    var phi_4318_: f32;
+    var phi_4320_: array<f32, 4>;
+    var phi_4322_: f32;
+    var phi_4324_: f32;
+    var phi_4326_: array<f32, 3>;
+    var phi_4328_: array<f32, 2>;
+    var phi_4330_: u32;
+    var phi_4332_: f32;
+    var phi_6659_: bool;
+    var phi_4894_: array<f32, 3>;
+    var phi_4895_: f32;
+    var phi_4897_: array<f32, 3>;
+    var phi_4898_: f32;
+    var phi_4899_: bool;
+    var phi_4903_: array<f32, 3>;
+    var phi_4919_: array<f32, 3>;
+    var phi_4920_: f32;
+    var phi_4926_: f32;
+    var phi_4945_: u32;
+    var phi_4948_: f32;
+    var phi_4992_: f32;
+    var phi_4946_: u32;
+    var phi_4949_: f32;
+    var phi_6670_: bool;
     var phi_6683_: bool;
-    var phi_5121_: type_31;
+    var phi_4998_: f32;
+    var phi_4999_: f32;
+    var phi_5000_: array<f32, 2>;
     var phi_6682_: bool;
-    var phi_5143_: u32;
-    var phi_5250_: bool;
-    var phi_5264_: bool;
-    var phi_5269_: f32;
-    var phi_5279_: bool;
-    var phi_5293_: bool;
-    var phi_5298_: f32;
-    var phi_5308_: bool;
-    var phi_5322_: bool;
-    var phi_5327_: f32;
-    var phi_5361_: bool;
-    var phi_5367_: type_23;
-    var phi_5369_: type_23;
-    var phi_5370_: bool;
-    var phi_5371_: type_23;
-    var phi_5372_: bool;
-    var phi_5373_: type_23;
-    var phi_5374_: bool;
-    var phi_5379_: type_23;
-    var phi_5434_: u32;
-    var phi_5435_: u32;
-    var phi_6654_: bool;
-    var phi_6707_: bool;
-    var phi_5506_: type_25;
-    var phi_6706_: bool;
-    var phi_5515_: array<u32, 3>;
-    var phi_6705_: bool;
-    var phi_5516_: array<u32, 3>;
-    var phi_6704_: bool;
-    var phi_6703_: bool;
-    var phi_6702_: bool;
-    var phi_5144_: u32;
-    var phi_6701_: bool;
-    var phi_5565_: u32;
-    var phi_5581_: u32;
+    var phi_5002_: type_30;
+    var phi_5025_: u32;
+    var phi_5026_: u32;
+    var phi_6679_: bool;
+    var phi_5065_: f32;
+    var phi_5073_: f32;
+    var phi_5755_: f32;
+    var phi_5756_: f32;
+    var phi_5777_: f32;
+    var phi_5789_: f32;
+    var phi_5790_: f32;
+    var phi_5798_: f32;
+    var phi_5806_: f32;
+    var phi_5807_: f32;
+    var phi_5820_: bool;
+    var phi_5847_: f32;
+    var phi_5850_: f32;
+    var phi_5851_: f32;
+    var phi_5855_: f32;
+    var phi_5858_: f32;
+    var phi_5859_: f32;
+    var phi_6697_: bool;
+    var phi_5150_: type_31;
+    var phi_6696_: bool;
+    var phi_5151_: type_31;
+    var phi_6695_: bool;
+    var phi_5173_: u32;
+    var phi_5280_: bool;
+    var phi_5294_: bool;
+    var phi_5299_: f32;
+    var phi_5309_: bool;
+    var phi_5323_: bool;
+    var phi_5328_: f32;
+    var phi_5338_: bool;
+    var phi_5352_: bool;
+    var phi_5357_: f32;
+    var phi_5391_: bool;
+    var phi_5397_: type_23;
+    var phi_5399_: type_23;
+    var phi_5400_: bool;
+    var phi_5401_: type_23;
+    var phi_5402_: bool;
+    var phi_5403_: type_23;
+    var phi_5404_: bool;
+    var phi_5409_: type_23;
+    var phi_5464_: u32;
+    var phi_5465_: u32;
+    var phi_6684_: bool;
+    var phi_6737_: bool;
+    var phi_5536_: type_25;
+    var phi_6736_: bool;
+    var phi_5545_: array<u32, 3>;
+    var phi_6735_: bool;
+    var phi_5546_: array<u32, 3>;
+    var phi_6734_: bool;
+    var phi_6733_: bool;
+    var phi_6732_: bool;
+    var phi_5174_: u32;
+    var phi_6731_: bool;
+    var phi_5595_: u32;
+    var phi_5611_: u32;
     var local_651: u32;
     var local_652: array<f32, 3>;
     var local_653: f32;
@@ -1553,7 +1553,7 @@ fn function_() {
                     let _e790 = global_2.member.member_3;
                     local_24 = f32(_e790);
                     local_650 = array<f32, 4>(0f, 0f, 0f, 0f);
-                    phi_5929_ = false;
+                    phi_5944_ = false;
                     phi_367_ = 0u;
                     phi_370_ = array<f32, 4>(0f, 0f, 0f, 0f);
                     phi_372_ = array<f32, 3>(0f, 0f, 0f);
@@ -1566,7 +1566,7 @@ fn function_() {
                     phi_386_ = 0u;
                     phi_388_ = 0f;
                     loop {
-                        let _e793 = phi_5929_;
+                        let _e793 = phi_5944_;
                         let _e795 = phi_367_;
                         let _e797 = phi_370_;
                         let _e799 = phi_372_;
@@ -1615,7 +1615,7 @@ fn function_() {
                                     let _e839 = local_5;
                                     if (_e838 < _e839) {
                                     } else {
-                                        phi_5935_ = true;
+                                        phi_5965_ = true;
                                         break;
                                     }
                                     let _e841 = local_40;
@@ -1627,7 +1627,7 @@ fn function_() {
                                     let _e848 = local_5;
                                     if (_e847 < _e848) {
                                     } else {
-                                        phi_5935_ = true;
+                                        phi_5965_ = true;
                                         break;
                                     }
                                     let _e850 = local_42;
@@ -1639,7 +1639,7 @@ fn function_() {
                                     let _e857 = local_5;
                                     if (_e856 < _e857) {
                                     } else {
-                                        phi_5935_ = true;
+                                        phi_5965_ = true;
                                         break;
                                     }
                                     let _e859 = local_44;
@@ -1724,7 +1724,7 @@ fn function_() {
                                     let _e922 = local_6;
                                     if (_e921 < _e922) {
                                     } else {
-                                        phi_5935_ = true;
+                                        phi_5965_ = true;
                                         break;
                                     }
                                     let _e924 = local_39;
@@ -1849,7 +1849,7 @@ fn function_() {
                                         let _e1062 = local_36;
                                         if _e1062 {
                                         } else {
-                                            phi_5935_ = true;
+                                            phi_5965_ = true;
                                             break;
                                         }
                                         let _e1063 = local_25;
@@ -1857,7 +1857,7 @@ fn function_() {
                                         local_59 = _e1065;
                                         if (_e1065 <= 0f) {
                                             let _e1126 = local_647;
-                                            phi_5945_ = _e793;
+                                            phi_5975_ = _e793;
                                             phi_759_ = type_25(array<f32, 3>(_e1126[0], _e1126[1], _e1126[2]), array<f32, 3>(0f, 0f, 0f));
                                         } else {
                                             let _e1067 = local_647;
@@ -1874,7 +1874,7 @@ fn function_() {
                                                     let _e1072 = local_61;
                                                     if _e1072 {
                                                     } else {
-                                                        phi_5898_ = true;
+                                                        phi_5928_ = true;
                                                         break;
                                                     }
                                                     let _e1073 = local_60;
@@ -1883,7 +1883,7 @@ fn function_() {
                                                     let _e1076 = local_61;
                                                     if _e1076 {
                                                     } else {
-                                                        phi_5898_ = true;
+                                                        phi_5928_ = true;
                                                         break;
                                                     }
                                                     let _e1077 = local_60;
@@ -1893,7 +1893,7 @@ fn function_() {
                                                         let _e1082 = local_61;
                                                         if _e1082 {
                                                         } else {
-                                                            phi_5898_ = true;
+                                                            phi_5928_ = true;
                                                             break;
                                                         }
                                                         let _e1083 = local_647[_e1077];
@@ -1902,7 +1902,7 @@ fn function_() {
                                                         let _e1086 = local_61;
                                                         if _e1086 {
                                                         } else {
-                                                            phi_5898_ = true;
+                                                            phi_5928_ = true;
                                                             break;
                                                         }
                                                         let _e1087 = local_60;
@@ -1914,7 +1914,7 @@ fn function_() {
                                                         let _e1094 = local_61;
                                                         if _e1094 {
                                                         } else {
-                                                            phi_5898_ = true;
+                                                            phi_5928_ = true;
                                                             break;
                                                         }
                                                         let _e1095 = local_647[_e1077];
@@ -1926,7 +1926,7 @@ fn function_() {
                                                         let _e1101 = local_61;
                                                         if _e1101 {
                                                         } else {
-                                                            phi_5898_ = true;
+                                                            phi_5928_ = true;
                                                             break;
                                                         }
                                                         let _e1102 = local_60;
@@ -1944,21 +1944,21 @@ fn function_() {
                                                 continuing {
                                                     let _e1111 = local_61;
                                                     phi_687_ = _e1110;
-                                                    phi_5898_ = _e793;
+                                                    phi_5928_ = _e793;
                                                     break if !(_e1111);
                                                 }
                                             }
-                                            let _e1114 = phi_5898_;
-                                            phi_5935_ = _e1114;
+                                            let _e1114 = phi_5928_;
+                                            phi_5965_ = _e1114;
                                             if _e1114 {
                                                 break;
                                             }
                                             let _e1115 = local_648;
                                             let _e1120 = local_649;
-                                            phi_5945_ = _e1114;
+                                            phi_5975_ = _e1114;
                                             phi_759_ = type_25(array<f32, 3>(_e1115[0], _e1115[1], _e1115[2]), array<f32, 3>(_e1120[0], _e1120[1], _e1120[2]));
                                         }
-                                        let _e1133 = phi_5945_;
+                                        let _e1133 = phi_5975_;
                                         let _e1135 = phi_759_;
                                         local_67 = _e1135.member;
                                         let _e1138 = local_27;
@@ -1968,7 +1968,7 @@ fn function_() {
                                         let _e1156 = local_36;
                                         if _e1156 {
                                         } else {
-                                            phi_5935_ = true;
+                                            phi_5965_ = true;
                                             break;
                                         }
                                         let _e1157 = local_25;
@@ -2017,7 +2017,7 @@ fn function_() {
                                         let _e1259 = local_29;
                                         let _e1261 = local_603;
                                         let _e1265 = local_28;
-                                        phi_5939_ = _e1133;
+                                        phi_5969_ = _e1133;
                                         phi_879_ = array<f32, 4>((_e1160[0] + (_e1165 * (_e1163 + 0.5f))), (_e1168[1] + (_e1173 * (_e1171 + 0.5f))), (_e1176[2] + (_e1178 * _e1179)), (_e1182[3] + _e1184));
                                         phi_880_ = array<f32, 3>((_e1138[0] + _e1135.member_1[0]), (_e1142[1] + _e1135.member_1[1]), (_e1146[2] + _e1135.member_1[2]));
                                         phi_881_ = (_e1265 + _e1246);
@@ -2029,7 +2029,7 @@ fn function_() {
                                         phi_887_ = (_e1199 + 1u);
                                         phi_888_ = (_e1187 + _e1188);
                                     } else {
-                                        phi_5939_ = _e793;
+                                        phi_5969_ = _e793;
                                         phi_879_ = _e797;
                                         phi_880_ = _e799;
                                         phi_881_ = _e801;
@@ -2041,7 +2041,7 @@ fn function_() {
                                         phi_887_ = _e813;
                                         phi_888_ = _e815;
                                     }
-                                    let _e1268 = phi_5939_;
+                                    let _e1268 = phi_5969_;
                                     let _e1270 = phi_879_;
                                     let _e1272 = phi_880_;
                                     let _e1274 = phi_881_;
@@ -2052,7 +2052,7 @@ fn function_() {
                                     let _e1284 = phi_886_;
                                     let _e1286 = phi_887_;
                                     let _e1288 = phi_888_;
-                                    phi_5938_ = _e1268;
+                                    phi_5968_ = _e1268;
                                     phi_889_ = _e1270;
                                     phi_890_ = _e1272;
                                     phi_891_ = _e1274;
@@ -2064,7 +2064,7 @@ fn function_() {
                                     phi_897_ = _e1286;
                                     phi_898_ = _e1288;
                                 } else {
-                                    phi_5938_ = _e793;
+                                    phi_5968_ = _e793;
                                     phi_889_ = _e797;
                                     phi_890_ = _e799;
                                     phi_891_ = _e801;
@@ -2076,7 +2076,7 @@ fn function_() {
                                     phi_897_ = _e813;
                                     phi_898_ = _e815;
                                 }
-                                let _e1290 = phi_5938_;
+                                let _e1290 = phi_5968_;
                                 let _e1292 = phi_889_;
                                 let _e1294 = phi_890_;
                                 let _e1296 = phi_891_;
@@ -2087,7 +2087,7 @@ fn function_() {
                                 let _e1306 = phi_896_;
                                 let _e1308 = phi_897_;
                                 let _e1310 = phi_898_;
-                                phi_5937_ = _e1290;
+                                phi_5967_ = _e1290;
                                 phi_899_ = _e1292;
                                 phi_900_ = _e1294;
                                 phi_901_ = _e1296;
@@ -2099,7 +2099,7 @@ fn function_() {
                                 phi_907_ = _e1308;
                                 phi_908_ = _e1310;
                             } else {
-                                phi_5937_ = _e793;
+                                phi_5967_ = _e793;
                                 phi_899_ = _e797;
                                 phi_900_ = _e799;
                                 phi_901_ = _e801;
@@ -2111,7 +2111,7 @@ fn function_() {
                                 phi_907_ = _e813;
                                 phi_908_ = _e815;
                             }
-                            let _e1312 = phi_5937_;
+                            let _e1312 = phi_5967_;
                             let _e1314 = phi_899_;
                             let _e1316 = phi_900_;
                             let _e1318 = phi_901_;
@@ -2123,7 +2123,7 @@ fn function_() {
                             let _e1330 = phi_907_;
                             let _e1332 = phi_908_;
                             let _e1333 = local_25;
-                            phi_5936_ = _e1312;
+                            phi_5966_ = _e1312;
                             phi_368_ = (_e1333 + 1u);
                             phi_371_ = _e1314;
                             phi_373_ = _e1316;
@@ -2136,7 +2136,7 @@ fn function_() {
                             phi_387_ = _e1330;
                             phi_389_ = _e1332;
                         } else {
-                            phi_5936_ = _e793;
+                            phi_5966_ = _e793;
                             phi_368_ = u32();
                             phi_371_ = array<f32, 4>();
                             phi_373_ = array<f32, 3>();
@@ -2149,7 +2149,7 @@ fn function_() {
                             phi_387_ = u32();
                             phi_389_ = f32();
                         }
-                        let _e1336 = phi_5936_;
+                        let _e1336 = phi_5966_;
                         let _e1338 = phi_368_;
                         let _e1340 = phi_371_;
                         let _e1342 = phi_373_;
@@ -2164,7 +2164,7 @@ fn function_() {
                         continue;
                         continuing {
                             let _e1359 = local_36;
-                            phi_5929_ = _e1336;
+                            phi_5944_ = _e1336;
                             phi_367_ = _e1338;
                             phi_370_ = _e1340;
                             phi_372_ = _e1342;
@@ -2176,11 +2176,11 @@ fn function_() {
                             phi_384_ = _e1354;
                             phi_386_ = _e1356;
                             phi_388_ = _e1358;
-                            phi_5935_ = _e1336;
+                            phi_5965_ = _e1336;
                             break if !(_e1359);
                         }
                     }
-                    let _e1362 = phi_5935_;
+                    let _e1362 = phi_5965_;
                     if _e1362 {
                         break;
                     }
@@ -2188,7 +2188,7 @@ fn function_() {
                     if (_e1363 == 0u) {
                         let _e1537 = local_622;
                         let _e1538 = local_34;
-                        phi_5958_ = _e1362;
+                        phi_5988_ = _e1362;
                         phi_1047_ = type_30(array<f32, 2>(0f, 0f), array<f32, 3>(0f, 0f, 0f), 0f, 0f, array<f32, 3>(0f, 0f, 0f), _e1537, _e1538, array<f32, 3>(0f, 0f, 0f), 0f, 0f);
                     } else {
                         let _e1365 = local_34;
@@ -2303,7 +2303,7 @@ fn function_() {
                                     let _e1466 = local_85;
                                     if _e1466 {
                                     } else {
-                                        phi_5946_ = true;
+                                        phi_5976_ = true;
                                         break;
                                     }
                                     let _e1467 = local_83;
@@ -2320,7 +2320,7 @@ fn function_() {
                                         let _e1489 = local_85;
                                         if _e1489 {
                                         } else {
-                                            phi_5946_ = true;
+                                            phi_5976_ = true;
                                             break;
                                         }
                                         let _e1490 = local_650[_e1467];
@@ -2348,11 +2348,11 @@ fn function_() {
                                     let _e1510 = local_85;
                                     phi_990_ = _e1507;
                                     phi_993_ = _e1509;
-                                    phi_5946_ = _e1362;
+                                    phi_5976_ = _e1362;
                                     break if !(_e1510);
                                 }
                             }
-                            let _e1513 = phi_5946_;
+                            let _e1513 = phi_5976_;
                             if _e1513 {
                                 break;
                             }
@@ -2360,18 +2360,18 @@ fn function_() {
                             let _e1516 = local_80;
                             let _e1518 = local_84;
                             let _e1519 = local_80;
-                            phi_5959_ = _e1513;
+                            phi_5989_ = _e1513;
                             phi_1043_ = (_e1514[2] * _e1516);
                             phi_1044_ = (_e1518 * _e1519);
                             phi_1045_ = array<f32, 2>(_e1455, _e1458);
                         } else {
                             let _e1449 = local_70;
-                            phi_5959_ = _e1362;
+                            phi_5989_ = _e1362;
                             phi_1043_ = (2f * _e1449);
                             phi_1044_ = 0f;
                             phi_1045_ = array<f32, 2>((_e1437[0] * _e1439), (_e1441[1] * _e1443));
                         }
-                        let _e1522 = phi_5959_;
+                        let _e1522 = phi_5989_;
                         let _e1524 = phi_1043_;
                         let _e1526 = phi_1044_;
                         let _e1528 = phi_1045_;
@@ -2382,10 +2382,10 @@ fn function_() {
                         let _e1533 = local_604;
                         let _e1534 = local_34;
                         let _e1535 = local_27;
-                        phi_5958_ = _e1522;
+                        phi_5988_ = _e1522;
                         phi_1047_ = type_30(_e1528, _e1529, _e1530, _e1531, _e1532, _e1533, _e1534, _e1535, _e1524, _e1526);
                     }
-                    let _e1541 = phi_5958_;
+                    let _e1541 = phi_5988_;
                     let _e1543 = phi_1047_;
                     local_88 = _e1543;
                     let _e1544 = local_22;
@@ -2417,7 +2417,7 @@ fn function_() {
                             let _e1581 = local_93;
                             if _e1581 {
                             } else {
-                                phi_5955_ = true;
+                                phi_5985_ = true;
                                 break;
                             }
                             let _e1582 = local_92;
@@ -2427,7 +2427,7 @@ fn function_() {
                             let _e1587 = local_7;
                             if (_e1586 < _e1587) {
                             } else {
-                                phi_5955_ = true;
+                                phi_5985_ = true;
                                 break;
                             }
                             let _e1589 = local_94;
@@ -2443,11 +2443,11 @@ fn function_() {
                         continuing {
                             let _e1597 = local_93;
                             phi_1070_ = _e1596;
-                            phi_5955_ = _e1541;
+                            phi_5985_ = _e1541;
                             break if !(_e1597);
                         }
                     }
-                    let _e1600 = phi_5955_;
+                    let _e1600 = phi_5985_;
                     if _e1600 {
                         break;
                     }
@@ -2458,13 +2458,13 @@ fn function_() {
                         let _e1606 = local_91;
                         let _e1607 = -(_e1606);
                         let _e1609 = select(_e1607, _e1605, (_e1605 > _e1607));
-                        phi_5999_ = _e1600;
+                        phi_5994_ = _e1600;
                         phi_1115_ = 0u;
                         phi_1118_ = 0u;
                         phi_1120_ = array<f32, 3>(0f, 0f, 0f);
                         phi_1122_ = 340282350000000000000000000000000000000f;
                         loop {
-                            let _e1613 = phi_5999_;
+                            let _e1613 = phi_5994_;
                             let _e1615 = phi_1115_;
                             let _e1617 = phi_1118_;
                             let _e1619 = phi_1120_;
@@ -2589,7 +2589,7 @@ fn function_() {
                                                             let _e1719 = local_5;
                                                             if (_e1718 < _e1719) {
                                                             } else {
-                                                                phi_5960_ = true;
+                                                                phi_5990_ = true;
                                                                 break;
                                                             }
                                                             let _e1721 = local_114;
@@ -2601,7 +2601,7 @@ fn function_() {
                                                             let _e1728 = local_5;
                                                             if (_e1727 < _e1728) {
                                                             } else {
-                                                                phi_5960_ = true;
+                                                                phi_5990_ = true;
                                                                 break;
                                                             }
                                                             let _e1730 = local_116;
@@ -2613,7 +2613,7 @@ fn function_() {
                                                             let _e1737 = local_5;
                                                             if (_e1736 < _e1737) {
                                                             } else {
-                                                                phi_5960_ = true;
+                                                                phi_5990_ = true;
                                                                 break;
                                                             }
                                                             let _e1739 = local_118;
@@ -2698,7 +2698,7 @@ fn function_() {
                                                             let _e1802 = local_6;
                                                             if (_e1801 < _e1802) {
                                                             } else {
-                                                                phi_5960_ = true;
+                                                                phi_5990_ = true;
                                                                 break;
                                                             }
                                                             let _e1804 = local_113;
@@ -2890,17 +2890,17 @@ fn function_() {
                                         phi_1140_ = _e1944;
                                         phi_1142_ = _e1946;
                                         phi_1144_ = _e1948;
-                                        phi_5960_ = _e1613;
+                                        phi_5990_ = _e1613;
                                         break if !(_e1949);
                                     }
                                 }
-                                let _e1952 = phi_5960_;
-                                phi_6005_ = _e1952;
+                                let _e1952 = phi_5990_;
+                                phi_6035_ = _e1952;
                                 if _e1952 {
                                     break;
                                 }
                                 let _e1953 = local_96;
-                                phi_6006_ = _e1952;
+                                phi_6036_ = _e1952;
                                 phi_1116_ = (_e1953 + 1u);
                                 let _e6370 = local_651;
                                 phi_1119_ = _e6370;
@@ -2909,13 +2909,13 @@ fn function_() {
                                 let _e6376 = local_653;
                                 phi_1123_ = _e6376;
                             } else {
-                                phi_6006_ = _e1613;
+                                phi_6036_ = _e1613;
                                 phi_1116_ = u32();
                                 phi_1119_ = u32();
                                 phi_1121_ = array<f32, 3>();
                                 phi_1123_ = f32();
                             }
-                            let _e1956 = phi_6006_;
+                            let _e1956 = phi_6036_;
                             let _e1958 = phi_1116_;
                             let _e1960 = phi_1119_;
                             let _e1962 = phi_1121_;
@@ -2923,26 +2923,26 @@ fn function_() {
                             continue;
                             continuing {
                                 let _e1965 = local_100;
-                                phi_5999_ = _e1956;
+                                phi_5994_ = _e1956;
                                 phi_1115_ = _e1958;
                                 phi_1118_ = _e1960;
                                 phi_1120_ = _e1962;
                                 phi_1122_ = _e1964;
-                                phi_6005_ = _e1956;
+                                phi_6035_ = _e1956;
                                 break if !(_e1965);
                             }
                         }
-                        let _e1968 = phi_6005_;
+                        let _e1968 = phi_6035_;
                         if _e1968 {
                             break;
                         }
                         let _e1969 = local_97;
                         if (_e1969 == 0u) {
                             local_625 = array<f32, 4>(0f, 0f, 0f, 0f);
-                            phi_6232_ = _e1968;
-                            phi_6150_ = 0f;
-                            phi_6102_ = 0f;
-                            phi_6054_ = 0f;
+                            phi_6249_ = _e1968;
+                            phi_6180_ = 0f;
+                            phi_6132_ = 0f;
+                            phi_6084_ = 0f;
                         } else {
                             let _e1971 = local_97;
                             let _e1973 = (1f / f32(_e1971));
@@ -2987,7 +2987,7 @@ fn function_() {
                                             let _e2013 = local_5;
                                             if (_e2012 < _e2013) {
                                             } else {
-                                                phi_6007_ = true;
+                                                phi_6037_ = true;
                                                 break;
                                             }
                                             let _e2015 = local_141;
@@ -2999,7 +2999,7 @@ fn function_() {
                                             let _e2022 = local_5;
                                             if (_e2021 < _e2022) {
                                             } else {
-                                                phi_6007_ = true;
+                                                phi_6037_ = true;
                                                 break;
                                             }
                                             let _e2024 = local_143;
@@ -3011,7 +3011,7 @@ fn function_() {
                                             let _e2031 = local_5;
                                             if (_e2030 < _e2031) {
                                             } else {
-                                                phi_6007_ = true;
+                                                phi_6037_ = true;
                                                 break;
                                             }
                                             let _e2033 = local_145;
@@ -3096,7 +3096,7 @@ fn function_() {
                                             let _e2096 = local_6;
                                             if (_e2095 < _e2096) {
                                             } else {
-                                                phi_6007_ = true;
+                                                phi_6037_ = true;
                                                 break;
                                             }
                                             let _e2098 = local_140;
@@ -3256,7 +3256,7 @@ fn function_() {
                                                 let _e2291 = local_137;
                                                 if _e2291 {
                                                 } else {
-                                                    phi_6007_ = true;
+                                                    phi_6037_ = true;
                                                     break;
                                                 }
                                                 let _e2292 = local_136;
@@ -3276,23 +3276,23 @@ fn function_() {
                                 continuing {
                                     let _e2301 = local_137;
                                     phi_1493_ = _e2300;
-                                    phi_6007_ = _e1968;
+                                    phi_6037_ = _e1968;
                                     break if !(_e2301);
                                 }
                             }
-                            let _e2304 = phi_6007_;
+                            let _e2304 = phi_6037_;
                             if _e2304 {
                                 break;
                             }
-                            phi_6232_ = _e2304;
-                            phi_6150_ = _e1976;
-                            phi_6102_ = _e1979;
-                            phi_6054_ = _e1982;
+                            phi_6249_ = _e2304;
+                            phi_6180_ = _e1976;
+                            phi_6132_ = _e1979;
+                            phi_6084_ = _e1982;
                         }
-                        let _e2306 = phi_6232_;
-                        let _e2308 = phi_6150_;
-                        let _e2310 = phi_6102_;
-                        let _e2312 = phi_6054_;
+                        let _e2306 = phi_6249_;
+                        let _e2308 = phi_6180_;
+                        let _e2310 = phi_6132_;
+                        let _e2312 = phi_6084_;
                         local_599 = _e2308;
                         local_598 = _e2310;
                         local_597 = _e2312;
@@ -3333,7 +3333,7 @@ fn function_() {
                         local_608 = _e2335;
                         if _e2335 {
                             local_645 = array<f32, 4>(0f, 0f, 0f, 0f);
-                            phi_6229_ = _e2306;
+                            phi_6244_ = _e2306;
                             phi_1914_ = 0u;
                             phi_1917_ = array<f32, 4>(0f, 0f, 0f, 0f);
                             phi_1919_ = array<f32, 3>(0f, 0f, 0f);
@@ -3346,7 +3346,7 @@ fn function_() {
                             phi_1933_ = 0u;
                             phi_1935_ = 0f;
                             loop {
-                                let _e2337 = phi_6229_;
+                                let _e2337 = phi_6244_;
                                 let _e2339 = phi_1914_;
                                 let _e2341 = phi_1917_;
                                 let _e2343 = phi_1919_;
@@ -3395,7 +3395,7 @@ fn function_() {
                                             let _e2383 = local_5;
                                             if (_e2382 < _e2383) {
                                             } else {
-                                                phi_6238_ = true;
+                                                phi_6268_ = true;
                                                 break;
                                             }
                                             let _e2385 = local_181;
@@ -3407,7 +3407,7 @@ fn function_() {
                                             let _e2392 = local_5;
                                             if (_e2391 < _e2392) {
                                             } else {
-                                                phi_6238_ = true;
+                                                phi_6268_ = true;
                                                 break;
                                             }
                                             let _e2394 = local_183;
@@ -3419,7 +3419,7 @@ fn function_() {
                                             let _e2401 = local_5;
                                             if (_e2400 < _e2401) {
                                             } else {
-                                                phi_6238_ = true;
+                                                phi_6268_ = true;
                                                 break;
                                             }
                                             let _e2403 = local_185;
@@ -3504,7 +3504,7 @@ fn function_() {
                                             let _e2466 = local_6;
                                             if (_e2465 < _e2466) {
                                             } else {
-                                                phi_6238_ = true;
+                                                phi_6268_ = true;
                                                 break;
                                             }
                                             let _e2468 = local_180;
@@ -3633,7 +3633,7 @@ fn function_() {
                                                 let _e2611 = local_177;
                                                 if _e2611 {
                                                 } else {
-                                                    phi_6238_ = true;
+                                                    phi_6268_ = true;
                                                     break;
                                                 }
                                                 let _e2612 = local_166;
@@ -3641,7 +3641,7 @@ fn function_() {
                                                 local_200 = _e2614;
                                                 if (_e2614 <= 0f) {
                                                     let _e2675 = local_642;
-                                                    phi_6248_ = _e2337;
+                                                    phi_6278_ = _e2337;
                                                     phi_2318_ = type_25(array<f32, 3>(_e2675[0], _e2675[1], _e2675[2]), array<f32, 3>(0f, 0f, 0f));
                                                 } else {
                                                     let _e2616 = local_642;
@@ -3658,7 +3658,7 @@ fn function_() {
                                                             let _e2621 = local_202;
                                                             if _e2621 {
                                                             } else {
-                                                                phi_6198_ = true;
+                                                                phi_6228_ = true;
                                                                 break;
                                                             }
                                                             let _e2622 = local_201;
@@ -3667,7 +3667,7 @@ fn function_() {
                                                             let _e2625 = local_202;
                                                             if _e2625 {
                                                             } else {
-                                                                phi_6198_ = true;
+                                                                phi_6228_ = true;
                                                                 break;
                                                             }
                                                             let _e2626 = local_201;
@@ -3677,7 +3677,7 @@ fn function_() {
                                                                 let _e2631 = local_202;
                                                                 if _e2631 {
                                                                 } else {
-                                                                    phi_6198_ = true;
+                                                                    phi_6228_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2632 = local_642[_e2626];
@@ -3686,7 +3686,7 @@ fn function_() {
                                                                 let _e2635 = local_202;
                                                                 if _e2635 {
                                                                 } else {
-                                                                    phi_6198_ = true;
+                                                                    phi_6228_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2636 = local_201;
@@ -3698,7 +3698,7 @@ fn function_() {
                                                                 let _e2643 = local_202;
                                                                 if _e2643 {
                                                                 } else {
-                                                                    phi_6198_ = true;
+                                                                    phi_6228_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2644 = local_642[_e2626];
@@ -3710,7 +3710,7 @@ fn function_() {
                                                                 let _e2650 = local_202;
                                                                 if _e2650 {
                                                                 } else {
-                                                                    phi_6198_ = true;
+                                                                    phi_6228_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2651 = local_201;
@@ -3728,21 +3728,21 @@ fn function_() {
                                                         continuing {
                                                             let _e2660 = local_202;
                                                             phi_2246_ = _e2659;
-                                                            phi_6198_ = _e2337;
+                                                            phi_6228_ = _e2337;
                                                             break if !(_e2660);
                                                         }
                                                     }
-                                                    let _e2663 = phi_6198_;
-                                                    phi_6238_ = _e2663;
+                                                    let _e2663 = phi_6228_;
+                                                    phi_6268_ = _e2663;
                                                     if _e2663 {
                                                         break;
                                                     }
                                                     let _e2664 = local_643;
                                                     let _e2669 = local_644;
-                                                    phi_6248_ = _e2663;
+                                                    phi_6278_ = _e2663;
                                                     phi_2318_ = type_25(array<f32, 3>(_e2664[0], _e2664[1], _e2664[2]), array<f32, 3>(_e2669[0], _e2669[1], _e2669[2]));
                                                 }
-                                                let _e2682 = phi_6248_;
+                                                let _e2682 = phi_6278_;
                                                 let _e2684 = phi_2318_;
                                                 local_208 = _e2684.member;
                                                 let _e2687 = local_168;
@@ -3752,7 +3752,7 @@ fn function_() {
                                                 let _e2705 = local_177;
                                                 if _e2705 {
                                                 } else {
-                                                    phi_6238_ = true;
+                                                    phi_6268_ = true;
                                                     break;
                                                 }
                                                 let _e2706 = local_166;
@@ -3801,7 +3801,7 @@ fn function_() {
                                                 let _e2808 = local_170;
                                                 let _e2810 = local_609;
                                                 let _e2814 = local_169;
-                                                phi_6242_ = _e2682;
+                                                phi_6272_ = _e2682;
                                                 phi_2438_ = array<f32, 4>((_e2709[0] + (_e2714 * (_e2712 + 0.5f))), (_e2717[1] + (_e2722 * (_e2720 + 0.5f))), (_e2725[2] + (_e2727 * _e2728)), (_e2731[3] + _e2733));
                                                 phi_2439_ = array<f32, 3>((_e2687[0] + _e2684.member_1[0]), (_e2691[1] + _e2684.member_1[1]), (_e2695[2] + _e2684.member_1[2]));
                                                 phi_2440_ = (_e2814 + _e2795);
@@ -3813,7 +3813,7 @@ fn function_() {
                                                 phi_2446_ = (_e2748 + 1u);
                                                 phi_2447_ = (_e2736 + _e2737);
                                             } else {
-                                                phi_6242_ = _e2337;
+                                                phi_6272_ = _e2337;
                                                 phi_2438_ = _e2341;
                                                 phi_2439_ = _e2343;
                                                 phi_2440_ = _e2345;
@@ -3825,7 +3825,7 @@ fn function_() {
                                                 phi_2446_ = _e2357;
                                                 phi_2447_ = _e2359;
                                             }
-                                            let _e2817 = phi_6242_;
+                                            let _e2817 = phi_6272_;
                                             let _e2819 = phi_2438_;
                                             let _e2821 = phi_2439_;
                                             let _e2823 = phi_2440_;
@@ -3836,7 +3836,7 @@ fn function_() {
                                             let _e2833 = phi_2445_;
                                             let _e2835 = phi_2446_;
                                             let _e2837 = phi_2447_;
-                                            phi_6241_ = _e2817;
+                                            phi_6271_ = _e2817;
                                             phi_2448_ = _e2819;
                                             phi_2449_ = _e2821;
                                             phi_2450_ = _e2823;
@@ -3848,7 +3848,7 @@ fn function_() {
                                             phi_2456_ = _e2835;
                                             phi_2457_ = _e2837;
                                         } else {
-                                            phi_6241_ = _e2337;
+                                            phi_6271_ = _e2337;
                                             phi_2448_ = _e2341;
                                             phi_2449_ = _e2343;
                                             phi_2450_ = _e2345;
@@ -3860,7 +3860,7 @@ fn function_() {
                                             phi_2456_ = _e2357;
                                             phi_2457_ = _e2359;
                                         }
-                                        let _e2839 = phi_6241_;
+                                        let _e2839 = phi_6271_;
                                         let _e2841 = phi_2448_;
                                         let _e2843 = phi_2449_;
                                         let _e2845 = phi_2450_;
@@ -3871,7 +3871,7 @@ fn function_() {
                                         let _e2855 = phi_2455_;
                                         let _e2857 = phi_2456_;
                                         let _e2859 = phi_2457_;
-                                        phi_6240_ = _e2839;
+                                        phi_6270_ = _e2839;
                                         phi_2458_ = _e2841;
                                         phi_2459_ = _e2843;
                                         phi_2460_ = _e2845;
@@ -3883,7 +3883,7 @@ fn function_() {
                                         phi_2466_ = _e2857;
                                         phi_2467_ = _e2859;
                                     } else {
-                                        phi_6240_ = _e2337;
+                                        phi_6270_ = _e2337;
                                         phi_2458_ = _e2341;
                                         phi_2459_ = _e2343;
                                         phi_2460_ = _e2345;
@@ -3895,7 +3895,7 @@ fn function_() {
                                         phi_2466_ = _e2357;
                                         phi_2467_ = _e2359;
                                     }
-                                    let _e2861 = phi_6240_;
+                                    let _e2861 = phi_6270_;
                                     let _e2863 = phi_2458_;
                                     let _e2865 = phi_2459_;
                                     let _e2867 = phi_2460_;
@@ -3907,7 +3907,7 @@ fn function_() {
                                     let _e2879 = phi_2466_;
                                     let _e2881 = phi_2467_;
                                     let _e2882 = local_166;
-                                    phi_6239_ = _e2861;
+                                    phi_6269_ = _e2861;
                                     phi_1915_ = (_e2882 + 1u);
                                     phi_1918_ = _e2863;
                                     phi_1920_ = _e2865;
@@ -3920,7 +3920,7 @@ fn function_() {
                                     phi_1934_ = _e2879;
                                     phi_1936_ = _e2881;
                                 } else {
-                                    phi_6239_ = _e2337;
+                                    phi_6269_ = _e2337;
                                     phi_1915_ = u32();
                                     phi_1918_ = array<f32, 4>();
                                     phi_1920_ = array<f32, 3>();
@@ -3933,7 +3933,7 @@ fn function_() {
                                     phi_1934_ = u32();
                                     phi_1936_ = f32();
                                 }
-                                let _e2885 = phi_6239_;
+                                let _e2885 = phi_6269_;
                                 let _e2887 = phi_1915_;
                                 let _e2889 = phi_1918_;
                                 let _e2891 = phi_1920_;
@@ -3948,7 +3948,7 @@ fn function_() {
                                 continue;
                                 continuing {
                                     let _e2908 = local_177;
-                                    phi_6229_ = _e2885;
+                                    phi_6244_ = _e2885;
                                     phi_1914_ = _e2887;
                                     phi_1917_ = _e2889;
                                     phi_1919_ = _e2891;
@@ -3960,11 +3960,11 @@ fn function_() {
                                     phi_1931_ = _e2903;
                                     phi_1933_ = _e2905;
                                     phi_1935_ = _e2907;
-                                    phi_6238_ = _e2885;
+                                    phi_6268_ = _e2885;
                                     break if !(_e2908);
                                 }
                             }
-                            let _e2911 = phi_6238_;
+                            let _e2911 = phi_6268_;
                             if _e2911 {
                                 break;
                             }
@@ -3972,7 +3972,7 @@ fn function_() {
                             if (_e2912 == 0u) {
                                 let _e3086 = local_622;
                                 let _e3087 = local_175;
-                                phi_6275_ = _e2911;
+                                phi_6300_ = _e2911;
                                 phi_2606_ = type_30(array<f32, 2>(0f, 0f), array<f32, 3>(0f, 0f, 0f), 0f, 0f, array<f32, 3>(0f, 0f, 0f), _e3086, _e3087, array<f32, 3>(0f, 0f, 0f), 0f, 0f);
                             } else {
                                 let _e2914 = local_175;
@@ -4087,7 +4087,7 @@ fn function_() {
                                             let _e3015 = local_226;
                                             if _e3015 {
                                             } else {
-                                                phi_6249_ = true;
+                                                phi_6279_ = true;
                                                 break;
                                             }
                                             let _e3016 = local_224;
@@ -4104,7 +4104,7 @@ fn function_() {
                                                 let _e3038 = local_226;
                                                 if _e3038 {
                                                 } else {
-                                                    phi_6249_ = true;
+                                                    phi_6279_ = true;
                                                     break;
                                                 }
                                                 let _e3039 = local_645[_e3016];
@@ -4132,11 +4132,11 @@ fn function_() {
                                             let _e3059 = local_226;
                                             phi_2549_ = _e3056;
                                             phi_2552_ = _e3058;
-                                            phi_6249_ = _e2911;
+                                            phi_6279_ = _e2911;
                                             break if !(_e3059);
                                         }
                                     }
-                                    let _e3062 = phi_6249_;
+                                    let _e3062 = phi_6279_;
                                     if _e3062 {
                                         break;
                                     }
@@ -4144,18 +4144,18 @@ fn function_() {
                                     let _e3065 = local_221;
                                     let _e3067 = local_225;
                                     let _e3068 = local_221;
-                                    phi_6276_ = _e3062;
+                                    phi_6301_ = _e3062;
                                     phi_2602_ = (_e3063[2] * _e3065);
                                     phi_2603_ = (_e3067 * _e3068);
                                     phi_2604_ = array<f32, 2>(_e3004, _e3007);
                                 } else {
                                     let _e2998 = local_211;
-                                    phi_6276_ = _e2911;
+                                    phi_6301_ = _e2911;
                                     phi_2602_ = (2f * _e2998);
                                     phi_2603_ = 0f;
                                     phi_2604_ = array<f32, 2>((_e2986[0] * _e2988), (_e2990[1] * _e2992));
                                 }
-                                let _e3071 = phi_6276_;
+                                let _e3071 = phi_6301_;
                                 let _e3073 = phi_2602_;
                                 let _e3075 = phi_2603_;
                                 let _e3077 = phi_2604_;
@@ -4166,10 +4166,10 @@ fn function_() {
                                 let _e3082 = local_610;
                                 let _e3083 = local_175;
                                 let _e3084 = local_168;
-                                phi_6275_ = _e3071;
+                                phi_6300_ = _e3071;
                                 phi_2606_ = type_30(_e3077, _e3078, _e3079, _e3080, _e3081, _e3082, _e3083, _e3084, _e3073, _e3075);
                             }
-                            let _e3090 = phi_6275_;
+                            let _e3090 = phi_6300_;
                             let _e3092 = phi_2606_;
                             local_229 = _e3092;
                             local_230 = _e3092.member_8;
@@ -4192,54 +4192,54 @@ fn function_() {
                             }
                             let _e3109 = phi_2628_;
                             let _e3110 = local_229;
-                            phi_6271_ = _e3090;
+                            phi_6296_ = _e3090;
                             phi_2631_ = (_e3109 + _e3110.member_9);
                         } else {
-                            phi_6271_ = _e2306;
+                            phi_6296_ = _e2306;
                             phi_2631_ = 0f;
                         }
-                        let _e3114 = phi_6271_;
+                        let _e3114 = phi_6296_;
                         let _e3116 = phi_2631_;
                         let _e3117 = local_608;
-                        phi_6270_ = _e3114;
+                        phi_6295_ = _e3114;
                         phi_2633_ = select(0f, _e1609, (_e1609 > 0f));
                         phi_2634_ = _e3116;
                         phi_2635_ = select(0u, 1u, _e3117);
                     } else {
-                        phi_6270_ = _e1600;
+                        phi_6295_ = _e1600;
                         phi_2633_ = 0f;
                         phi_2634_ = 0f;
                         phi_2635_ = 0u;
                     }
-                    let _e3120 = phi_6270_;
+                    let _e3120 = phi_6295_;
                     let _e3122 = phi_2633_;
                     let _e3124 = phi_2634_;
                     let _e3126 = phi_2635_;
-                    phi_6269_ = _e3120;
+                    phi_6294_ = _e3120;
                     phi_2636_ = _e3122;
                     phi_2637_ = _e3124;
                     phi_2638_ = _e3126;
                 } else {
-                    phi_6269_ = false;
+                    phi_6294_ = false;
                     phi_2636_ = 0f;
                     phi_2637_ = 0f;
                     phi_2638_ = 0u;
                 }
-                let _e3128 = phi_6269_;
+                let _e3128 = phi_6294_;
                 let _e3130 = phi_2636_;
                 let _e3132 = phi_2637_;
                 let _e3134 = phi_2638_;
-                phi_6268_ = _e3128;
+                phi_6293_ = _e3128;
                 phi_2639_ = _e3130;
                 phi_2640_ = _e3132;
                 phi_2641_ = _e3134;
             } else {
-                phi_6268_ = false;
+                phi_6293_ = false;
                 phi_2639_ = 0f;
                 phi_2640_ = 0f;
                 phi_2641_ = 0u;
             }
-            let _e3136 = phi_6268_;
+            let _e3136 = phi_6293_;
             let _e3138 = phi_2639_;
             let _e3140 = phi_2640_;
             let _e3142 = phi_2641_;
@@ -4351,15 +4351,15 @@ fn function_() {
                 global_10[_e3265] = _e3267;
                 storageBarrier();
                 workgroupBarrier();
-                phi_2722_ = 0u;
-                phi_2725_ = 64u;
-                phi_2726_ = 64u;
-                phi_2728_ = 0u;
+                phi_2727_ = 0u;
+                phi_2730_ = 64u;
+                phi_2731_ = 64u;
+                phi_2733_ = 0u;
                 loop {
-                    let _e3269 = phi_2722_;
-                    let _e3271 = phi_2725_;
-                    let _e3273 = phi_2726_;
-                    let _e3275 = phi_2728_;
+                    let _e3269 = phi_2727_;
+                    let _e3271 = phi_2730_;
+                    let _e3273 = phi_2731_;
+                    let _e3275 = phi_2733_;
                     local_246 = _e3269;
                     local_247 = _e3271;
                     local_248 = _e3273;
@@ -4389,16 +4389,16 @@ fn function_() {
                             local_254 = _e3293;
                             if (_e3293 < 384u) {
                             } else {
-                                phi_6278_ = true;
+                                phi_6308_ = true;
                                 break;
                             }
                             let _e3295 = local_254;
                             let _e3297 = global_10[_e3295];
-                            phi_2756_ = _e3297;
+                            phi_2761_ = _e3297;
                         } else {
-                            phi_2756_ = 0u;
+                            phi_2761_ = 0u;
                         }
-                        let _e3299 = phi_2756_;
+                        let _e3299 = phi_2761_;
                         let _e3300 = subgroupInclusiveAdd(_e3299);
                         local_255 = _e3300;
                         let _e3301 = local_253;
@@ -4409,7 +4409,7 @@ fn function_() {
                             local_256 = _e3304;
                             if (_e3304 < 384u) {
                             } else {
-                                phi_6278_ = true;
+                                phi_6308_ = true;
                                 break;
                             }
                             let _e3306 = local_256;
@@ -4421,42 +4421,42 @@ fn function_() {
                         let _e3309 = local_246;
                         let _e3310 = local_252;
                         let _e3312 = local_249;
-                        phi_2723_ = (_e3309 + _e3310);
-                        phi_2727_ = _e3283;
-                        phi_2729_ = (_e3312 + 1u);
+                        phi_2728_ = (_e3309 + _e3310);
+                        phi_2732_ = _e3283;
+                        phi_2734_ = (_e3312 + 1u);
                     } else {
-                        phi_2723_ = u32();
-                        phi_2727_ = u32();
-                        phi_2729_ = u32();
+                        phi_2728_ = u32();
+                        phi_2732_ = u32();
+                        phi_2734_ = u32();
                     }
-                    let _e3315 = phi_2723_;
-                    let _e3317 = phi_2727_;
-                    let _e3319 = phi_2729_;
+                    let _e3315 = phi_2728_;
+                    let _e3317 = phi_2732_;
+                    let _e3319 = phi_2734_;
                     continue;
                     continuing {
                         let _e3320 = local_250;
-                        phi_2722_ = _e3315;
-                        phi_2725_ = _e3269;
-                        phi_2726_ = _e3317;
-                        phi_2728_ = _e3319;
-                        phi_6278_ = _e3136;
+                        phi_2727_ = _e3315;
+                        phi_2730_ = _e3269;
+                        phi_2731_ = _e3317;
+                        phi_2733_ = _e3319;
+                        phi_6308_ = _e3136;
                         break if !(_e3320);
                     }
                 }
-                let _e3323 = phi_6278_;
+                let _e3323 = phi_6308_;
                 if _e3323 {
                     break;
                 }
                 let _e6559 = local_654;
-                phi_2773_ = _e6559;
+                phi_2783_ = _e6559;
                 let _e6562 = local_655;
-                phi_2776_ = _e6562;
+                phi_2786_ = _e6562;
                 let _e6565 = local_656;
-                phi_2778_ = _e6565;
+                phi_2788_ = _e6565;
                 loop {
-                    let _e3325 = phi_2773_;
-                    let _e3327 = phi_2776_;
-                    let _e3329 = phi_2778_;
+                    let _e3325 = phi_2783_;
+                    let _e3327 = phi_2786_;
+                    let _e3329 = phi_2788_;
                     local_257 = _e3325;
                     local_258 = _e3327;
                     local_259 = _e3329;
@@ -4472,13 +4472,13 @@ fn function_() {
                         local_262 = _e3336;
                         let _e3337 = local_259;
                         if (_e3337 == 1u) {
-                            phi_2793_ = 64u;
+                            phi_2803_ = 64u;
                         } else {
                             let _e3339 = local_257;
                             let _e3340 = local_262;
-                            phi_2793_ = (_e3339 - _e3340);
+                            phi_2803_ = (_e3339 - _e3340);
                         }
-                        let _e3343 = phi_2793_;
+                        let _e3343 = phi_2803_;
                         local_263 = _e3343;
                         let _e3344 = local;
                         let _e3345 = local_241;
@@ -4496,7 +4496,7 @@ fn function_() {
                                 local_265 = _e3359;
                                 if (_e3359 < 384u) {
                                 } else {
-                                    phi_6283_ = true;
+                                    phi_6313_ = true;
                                     break;
                                 }
                                 let _e3361 = local_265;
@@ -4507,7 +4507,7 @@ fn function_() {
                                 local_267 = _e3365;
                                 if _e3365 {
                                 } else {
-                                    phi_6283_ = true;
+                                    phi_6313_ = true;
                                     break;
                                 }
                                 let _e3366 = local_264;
@@ -4517,7 +4517,7 @@ fn function_() {
                                 let _e3371 = local_267;
                                 if _e3371 {
                                 } else {
-                                    phi_6283_ = true;
+                                    phi_6313_ = true;
                                     break;
                                 }
                                 let _e3372 = local_268;
@@ -4527,39 +4527,39 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e3373 = local_259;
-                        phi_2774_ = _e3343;
-                        phi_2777_ = _e3336;
-                        phi_2779_ = (_e3373 - 1u);
+                        phi_2784_ = _e3343;
+                        phi_2787_ = _e3336;
+                        phi_2789_ = (_e3373 - 1u);
                     } else {
-                        phi_2774_ = u32();
-                        phi_2777_ = u32();
-                        phi_2779_ = u32();
+                        phi_2784_ = u32();
+                        phi_2787_ = u32();
+                        phi_2789_ = u32();
                     }
-                    let _e3376 = phi_2774_;
-                    let _e3378 = phi_2777_;
-                    let _e3380 = phi_2779_;
+                    let _e3376 = phi_2784_;
+                    let _e3378 = phi_2787_;
+                    let _e3380 = phi_2789_;
                     continue;
                     continuing {
                         let _e3381 = local_260;
-                        phi_2773_ = _e3376;
-                        phi_2776_ = _e3378;
-                        phi_2778_ = _e3380;
-                        phi_6283_ = _e3323;
+                        phi_2783_ = _e3376;
+                        phi_2786_ = _e3378;
+                        phi_2788_ = _e3380;
+                        phi_6313_ = _e3323;
                         break if !(_e3381);
                     }
                 }
-                let _e3384 = phi_6283_;
+                let _e3384 = phi_6313_;
                 if _e3384 {
                     break;
                 }
-                phi_6300_ = _e3384;
-                phi_2884_ = 64u;
+                phi_6324_ = _e3384;
+                phi_2894_ = 64u;
             } else {
-                phi_2830_ = 1u;
-                phi_2833_ = 0u;
+                phi_2840_ = 1u;
+                phi_2843_ = 0u;
                 loop {
-                    let _e3199 = phi_2830_;
-                    let _e3201 = phi_2833_;
+                    let _e3199 = phi_2840_;
+                    let _e3201 = phi_2843_;
                     local_269 = _e3199;
                     local_270 = _e3201;
                     local_657 = _e3201;
@@ -4576,7 +4576,7 @@ fn function_() {
                         local_272 = _e3209;
                         if (_e3209 < 384u) {
                         } else {
-                            phi_6258_ = true;
+                            phi_6288_ = true;
                             break;
                         }
                         let _e3211 = local_272;
@@ -4592,17 +4592,17 @@ fn function_() {
                             local_274 = _e3221;
                             if (_e3221 < 384u) {
                             } else {
-                                phi_6258_ = true;
+                                phi_6288_ = true;
                                 break;
                             }
                             let _e3223 = local_274;
                             let _e3225 = global_10[_e3223];
                             let _e3226 = local_273;
-                            phi_2869_ = (_e3225 + _e3226);
+                            phi_2879_ = (_e3225 + _e3226);
                         } else {
-                            phi_2869_ = _e3213;
+                            phi_2879_ = _e3213;
                         }
-                        let _e3229 = phi_2869_;
+                        let _e3229 = phi_2879_;
                         local_275 = _e3229;
                         let _e3230 = local_611;
                         let _e3231 = local;
@@ -4610,7 +4610,7 @@ fn function_() {
                         local_276 = _e3232;
                         if (_e3232 < 384u) {
                         } else {
-                            phi_6258_ = true;
+                            phi_6288_ = true;
                             break;
                         }
                         let _e3234 = local_276;
@@ -4619,33 +4619,33 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e3237 = local_269;
-                        phi_2831_ = (_e3237 * 2u);
-                        phi_2834_ = _e3206;
+                        phi_2841_ = (_e3237 * 2u);
+                        phi_2844_ = _e3206;
                     } else {
-                        phi_2831_ = u32();
-                        phi_2834_ = u32();
+                        phi_2841_ = u32();
+                        phi_2844_ = u32();
                     }
-                    let _e3240 = phi_2831_;
-                    let _e3242 = phi_2834_;
+                    let _e3240 = phi_2841_;
+                    let _e3242 = phi_2844_;
                     continue;
                     continuing {
                         let _e3243 = local_271;
-                        phi_2830_ = _e3240;
-                        phi_2833_ = _e3242;
-                        phi_6258_ = _e3136;
+                        phi_2840_ = _e3240;
+                        phi_2843_ = _e3242;
+                        phi_6288_ = _e3136;
                         break if !(_e3243);
                     }
                 }
-                let _e3246 = phi_6258_;
+                let _e3246 = phi_6288_;
                 if _e3246 {
                     break;
                 }
-                phi_6300_ = _e3246;
+                phi_6324_ = _e3246;
                 let _e6574 = local_657;
-                phi_2884_ = _e6574;
+                phi_2894_ = _e6574;
             }
-            let _e3386 = phi_6300_;
-            let _e3388 = phi_2884_;
+            let _e3386 = phi_6324_;
+            let _e3388 = phi_2894_;
             local_277 = _e3388;
             let _e3389 = local_239;
             if _e3389 {
@@ -4658,34 +4658,34 @@ fn function_() {
                     local_278 = _e3398;
                     if _e3398 {
                         let _e3399 = local_1;
-                        phi_2901_ = type_34(1u, _e3399);
+                        phi_2911_ = type_34(1u, _e3399);
                     } else {
-                        phi_2901_ = type_34();
+                        phi_2911_ = type_34();
                     }
-                    let _e3402 = phi_2901_;
+                    let _e3402 = phi_2911_;
                     let _e3403 = local_278;
-                    phi_2903_ = _e3402;
-                    phi_2904_ = select(true, false, _e3403);
+                    phi_2913_ = _e3402;
+                    phi_2914_ = select(true, false, _e3403);
                 } else {
-                    phi_2903_ = type_34();
-                    phi_2904_ = true;
+                    phi_2913_ = type_34();
+                    phi_2914_ = true;
                 }
-                let _e3406 = phi_2903_;
-                let _e3408 = phi_2904_;
-                phi_2905_ = _e3406;
-                phi_2906_ = _e3408;
+                let _e3406 = phi_2913_;
+                let _e3408 = phi_2914_;
+                phi_2915_ = _e3406;
+                phi_2916_ = _e3408;
             } else {
-                phi_2905_ = type_34();
-                phi_2906_ = true;
+                phi_2915_ = type_34();
+                phi_2916_ = true;
             }
-            let _e3410 = phi_2905_;
-            let _e3412 = phi_2906_;
+            let _e3410 = phi_2915_;
+            let _e3412 = phi_2916_;
             if _e3412 {
-                phi_2911_ = type_34(0u, type_34().member_1);
+                phi_2921_ = type_34(0u, type_34().member_1);
             } else {
-                phi_2911_ = _e3410;
+                phi_2921_ = _e3410;
             }
-            let _e3417 = phi_2911_;
+            let _e3417 = phi_2921_;
             local_279 = _e3417.member_1;
             if (bitcast<i32>(_e3417.member) != 0i) {
                 let _e3473 = local_279;
@@ -4704,11 +4704,11 @@ fn function_() {
                 }
                 let _e3485 = local_282;
                 let _e3487 = global_10[_e3485];
-                phi_2934_ = 1u;
-                phi_2937_ = _e3487;
+                phi_2948_ = 1u;
+                phi_2951_ = _e3487;
                 loop {
-                    let _e3489 = phi_2934_;
-                    let _e3491 = phi_2937_;
+                    let _e3489 = phi_2948_;
+                    let _e3491 = phi_2951_;
                     local_283 = _e3489;
                     local_284 = _e3491;
                     let _e3492 = local_283;
@@ -4727,25 +4727,25 @@ fn function_() {
                             let _e3502 = local_284;
                             let _e3504 = local_286;
                             let _e3505 = local_284;
-                            phi_2955_ = select(_e3505, _e3504, (_e3501 > _e3502));
+                            phi_2969_ = select(_e3505, _e3504, (_e3501 > _e3502));
                         } else {
-                            phi_2955_ = _e3491;
+                            phi_2969_ = _e3491;
                         }
-                        let _e3508 = phi_2955_;
+                        let _e3508 = phi_2969_;
                         let _e3509 = local_283;
-                        phi_2935_ = (_e3509 * 2u);
-                        phi_2938_ = _e3508;
+                        phi_2949_ = (_e3509 * 2u);
+                        phi_2952_ = _e3508;
                     } else {
-                        phi_2935_ = u32();
-                        phi_2938_ = u32();
+                        phi_2949_ = u32();
+                        phi_2952_ = u32();
                     }
-                    let _e3512 = phi_2935_;
-                    let _e3514 = phi_2938_;
+                    let _e3512 = phi_2949_;
+                    let _e3514 = phi_2952_;
                     continue;
                     continuing {
                         let _e3515 = local_285;
-                        phi_2934_ = _e3512;
-                        phi_2937_ = _e3514;
+                        phi_2948_ = _e3512;
+                        phi_2951_ = _e3514;
                         break if !(_e3515);
                     }
                 }
@@ -4761,15 +4761,15 @@ fn function_() {
                 global_10[_e3520] = _e3522;
                 storageBarrier();
                 workgroupBarrier();
-                phi_2966_ = 128u;
-                phi_2969_ = 192u;
-                phi_2970_ = 64u;
-                phi_2972_ = 0u;
+                phi_2981_ = 128u;
+                phi_2984_ = 192u;
+                phi_2985_ = 64u;
+                phi_2987_ = 0u;
                 loop {
-                    let _e3524 = phi_2966_;
-                    let _e3526 = phi_2969_;
-                    let _e3528 = phi_2970_;
-                    let _e3530 = phi_2972_;
+                    let _e3524 = phi_2981_;
+                    let _e3526 = phi_2984_;
+                    let _e3528 = phi_2985_;
+                    let _e3530 = phi_2987_;
                     local_288 = _e3524;
                     local_289 = _e3526;
                     local_290 = _e3528;
@@ -4799,21 +4799,21 @@ fn function_() {
                             local_296 = _e3548;
                             if (_e3548 < 384u) {
                             } else {
-                                phi_6301_ = true;
+                                phi_6331_ = true;
                                 break;
                             }
                             let _e3550 = local_296;
                             let _e3552 = global_10[_e3550];
-                            phi_3000_ = _e3552;
+                            phi_3015_ = _e3552;
                         } else {
-                            phi_3000_ = 0u;
+                            phi_3015_ = 0u;
                         }
-                        let _e3554 = phi_3000_;
-                        phi_3002_ = 1u;
-                        phi_3005_ = _e3554;
+                        let _e3554 = phi_3015_;
+                        phi_3021_ = 1u;
+                        phi_3024_ = _e3554;
                         loop {
-                            let _e3556 = phi_3002_;
-                            let _e3558 = phi_3005_;
+                            let _e3556 = phi_3021_;
+                            let _e3558 = phi_3024_;
                             local_297 = _e3556;
                             local_298 = _e3558;
                             let _e3559 = local_297;
@@ -4832,25 +4832,25 @@ fn function_() {
                                     let _e3569 = local_298;
                                     let _e3571 = local_300;
                                     let _e3572 = local_298;
-                                    phi_3023_ = select(_e3572, _e3571, (_e3568 > _e3569));
+                                    phi_3042_ = select(_e3572, _e3571, (_e3568 > _e3569));
                                 } else {
-                                    phi_3023_ = _e3558;
+                                    phi_3042_ = _e3558;
                                 }
-                                let _e3575 = phi_3023_;
+                                let _e3575 = phi_3042_;
                                 let _e3576 = local_297;
-                                phi_3003_ = (_e3576 * 2u);
-                                phi_3006_ = _e3575;
+                                phi_3022_ = (_e3576 * 2u);
+                                phi_3025_ = _e3575;
                             } else {
-                                phi_3003_ = u32();
-                                phi_3006_ = u32();
+                                phi_3022_ = u32();
+                                phi_3025_ = u32();
                             }
-                            let _e3579 = phi_3003_;
-                            let _e3581 = phi_3006_;
+                            let _e3579 = phi_3022_;
+                            let _e3581 = phi_3025_;
                             continue;
                             continuing {
                                 let _e3582 = local_299;
-                                phi_3002_ = _e3579;
-                                phi_3005_ = _e3581;
+                                phi_3021_ = _e3579;
+                                phi_3024_ = _e3581;
                                 break if !(_e3582);
                             }
                         }
@@ -4862,7 +4862,7 @@ fn function_() {
                             local_301 = _e3587;
                             if (_e3587 < 384u) {
                             } else {
-                                phi_6301_ = true;
+                                phi_6331_ = true;
                                 break;
                             }
                             let _e3589 = local_301;
@@ -4874,42 +4874,42 @@ fn function_() {
                         let _e3592 = local_288;
                         let _e3593 = local_294;
                         let _e3595 = local_291;
-                        phi_2967_ = (_e3592 + _e3593);
-                        phi_2971_ = _e3538;
-                        phi_2973_ = (_e3595 + 1u);
+                        phi_2982_ = (_e3592 + _e3593);
+                        phi_2986_ = _e3538;
+                        phi_2988_ = (_e3595 + 1u);
                     } else {
-                        phi_2967_ = u32();
-                        phi_2971_ = u32();
-                        phi_2973_ = u32();
+                        phi_2982_ = u32();
+                        phi_2986_ = u32();
+                        phi_2988_ = u32();
                     }
-                    let _e3598 = phi_2967_;
-                    let _e3600 = phi_2971_;
-                    let _e3602 = phi_2973_;
+                    let _e3598 = phi_2982_;
+                    let _e3600 = phi_2986_;
+                    let _e3602 = phi_2988_;
                     continue;
                     continuing {
                         let _e3603 = local_292;
-                        phi_2966_ = _e3598;
-                        phi_2969_ = _e3524;
-                        phi_2970_ = _e3600;
-                        phi_2972_ = _e3602;
-                        phi_6301_ = _e3386;
+                        phi_2981_ = _e3598;
+                        phi_2984_ = _e3524;
+                        phi_2985_ = _e3600;
+                        phi_2987_ = _e3602;
+                        phi_6331_ = _e3386;
                         break if !(_e3603);
                     }
                 }
-                let _e3606 = phi_6301_;
+                let _e3606 = phi_6331_;
                 if _e3606 {
                     break;
                 }
                 let _e6608 = local_658;
-                phi_3040_ = _e6608;
+                phi_3060_ = _e6608;
                 let _e6611 = local_659;
-                phi_3043_ = _e6611;
+                phi_3063_ = _e6611;
                 let _e6614 = local_660;
-                phi_3045_ = _e6614;
+                phi_3065_ = _e6614;
                 loop {
-                    let _e3608 = phi_3040_;
-                    let _e3610 = phi_3043_;
-                    let _e3612 = phi_3045_;
+                    let _e3608 = phi_3060_;
+                    let _e3610 = phi_3063_;
+                    let _e3612 = phi_3065_;
                     local_302 = _e3608;
                     local_303 = _e3610;
                     local_304 = _e3612;
@@ -4925,13 +4925,13 @@ fn function_() {
                         local_307 = _e3619;
                         let _e3620 = local_304;
                         if (_e3620 == 1u) {
-                            phi_3060_ = 192u;
+                            phi_3080_ = 192u;
                         } else {
                             let _e3622 = local_302;
                             let _e3623 = local_307;
-                            phi_3060_ = (_e3622 - _e3623);
+                            phi_3080_ = (_e3622 - _e3623);
                         }
-                        let _e3626 = phi_3060_;
+                        let _e3626 = phi_3080_;
                         local_308 = _e3626;
                         let _e3627 = local;
                         let _e3628 = local_279;
@@ -4949,7 +4949,7 @@ fn function_() {
                                 local_310 = _e3642;
                                 if (_e3642 < 384u) {
                                 } else {
-                                    phi_6314_ = true;
+                                    phi_6344_ = true;
                                     break;
                                 }
                                 let _e3644 = local_310;
@@ -4960,7 +4960,7 @@ fn function_() {
                                 local_312 = _e3648;
                                 if _e3648 {
                                 } else {
-                                    phi_6314_ = true;
+                                    phi_6344_ = true;
                                     break;
                                 }
                                 let _e3649 = local_309;
@@ -4971,7 +4971,7 @@ fn function_() {
                                 let _e3656 = local_312;
                                 if _e3656 {
                                 } else {
-                                    phi_6314_ = true;
+                                    phi_6344_ = true;
                                     break;
                                 }
                                 let _e3657 = local_613;
@@ -4981,39 +4981,39 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e3658 = local_304;
-                        phi_3041_ = _e3626;
-                        phi_3044_ = _e3619;
-                        phi_3046_ = (_e3658 - 1u);
+                        phi_3061_ = _e3626;
+                        phi_3064_ = _e3619;
+                        phi_3066_ = (_e3658 - 1u);
                     } else {
-                        phi_3041_ = u32();
-                        phi_3044_ = u32();
-                        phi_3046_ = u32();
+                        phi_3061_ = u32();
+                        phi_3064_ = u32();
+                        phi_3066_ = u32();
                     }
-                    let _e3661 = phi_3041_;
-                    let _e3663 = phi_3044_;
-                    let _e3665 = phi_3046_;
+                    let _e3661 = phi_3061_;
+                    let _e3663 = phi_3064_;
+                    let _e3665 = phi_3066_;
                     continue;
                     continuing {
                         let _e3666 = local_305;
-                        phi_3040_ = _e3661;
-                        phi_3043_ = _e3663;
-                        phi_3045_ = _e3665;
-                        phi_6314_ = _e3606;
+                        phi_3060_ = _e3661;
+                        phi_3063_ = _e3663;
+                        phi_3065_ = _e3665;
+                        phi_6344_ = _e3606;
                         break if !(_e3666);
                     }
                 }
-                let _e3669 = phi_6314_;
+                let _e3669 = phi_6344_;
                 if _e3669 {
                     break;
                 }
-                phi_6332_ = _e3669;
-                phi_3159_ = 192u;
+                phi_6356_ = _e3669;
+                phi_3179_ = 192u;
             } else {
-                phi_3101_ = 1u;
-                phi_3104_ = 128u;
+                phi_3121_ = 1u;
+                phi_3124_ = 128u;
                 loop {
-                    let _e3423 = phi_3101_;
-                    let _e3425 = phi_3104_;
+                    let _e3423 = phi_3121_;
+                    let _e3425 = phi_3124_;
                     local_313 = _e3423;
                     local_314 = _e3425;
                     local_661 = _e3425;
@@ -5030,7 +5030,7 @@ fn function_() {
                         local_316 = _e3433;
                         if (_e3433 < 384u) {
                         } else {
-                            phi_6289_ = true;
+                            phi_6319_ = true;
                             break;
                         }
                         let _e3435 = local_316;
@@ -5046,18 +5046,18 @@ fn function_() {
                             local_318 = _e3445;
                             if (_e3445 < 384u) {
                             } else {
-                                phi_6289_ = true;
+                                phi_6319_ = true;
                                 break;
                             }
                             let _e3447 = local_318;
                             let _e3449 = global_10[_e3447];
                             let _e3450 = local_317;
                             let _e3452 = local_317;
-                            phi_3144_ = select(_e3452, _e3449, (_e3449 > _e3450));
+                            phi_3164_ = select(_e3452, _e3449, (_e3449 > _e3450));
                         } else {
-                            phi_3144_ = _e3437;
+                            phi_3164_ = _e3437;
                         }
-                        let _e3455 = phi_3144_;
+                        let _e3455 = phi_3164_;
                         local_319 = _e3455;
                         let _e3456 = local_612;
                         let _e3457 = local;
@@ -5065,7 +5065,7 @@ fn function_() {
                         local_320 = _e3458;
                         if (_e3458 < 384u) {
                         } else {
-                            phi_6289_ = true;
+                            phi_6319_ = true;
                             break;
                         }
                         let _e3460 = local_320;
@@ -5074,33 +5074,33 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e3463 = local_313;
-                        phi_3102_ = (_e3463 * 2u);
-                        phi_3105_ = _e3430;
+                        phi_3122_ = (_e3463 * 2u);
+                        phi_3125_ = _e3430;
                     } else {
-                        phi_3102_ = u32();
-                        phi_3105_ = u32();
+                        phi_3122_ = u32();
+                        phi_3125_ = u32();
                     }
-                    let _e3466 = phi_3102_;
-                    let _e3468 = phi_3105_;
+                    let _e3466 = phi_3122_;
+                    let _e3468 = phi_3125_;
                     continue;
                     continuing {
                         let _e3469 = local_315;
-                        phi_3101_ = _e3466;
-                        phi_3104_ = _e3468;
-                        phi_6289_ = _e3386;
+                        phi_3121_ = _e3466;
+                        phi_3124_ = _e3468;
+                        phi_6319_ = _e3386;
                         break if !(_e3469);
                     }
                 }
-                let _e3472 = phi_6289_;
+                let _e3472 = phi_6319_;
                 if _e3472 {
                     break;
                 }
-                phi_6332_ = _e3472;
+                phi_6356_ = _e3472;
                 let _e6623 = local_661;
-                phi_3159_ = _e6623;
+                phi_3179_ = _e6623;
             }
-            let _e3671 = phi_6332_;
-            let _e3673 = phi_3159_;
+            let _e3671 = phi_6356_;
+            let _e3673 = phi_3179_;
             local_321 = _e3673;
             let _e3674 = local_239;
             if _e3674 {
@@ -5113,34 +5113,34 @@ fn function_() {
                     local_322 = _e3683;
                     if _e3683 {
                         let _e3684 = local_1;
-                        phi_3176_ = type_34(1u, _e3684);
+                        phi_3196_ = type_34(1u, _e3684);
                     } else {
-                        phi_3176_ = type_34();
+                        phi_3196_ = type_34();
                     }
-                    let _e3687 = phi_3176_;
+                    let _e3687 = phi_3196_;
                     let _e3688 = local_322;
-                    phi_3178_ = _e3687;
-                    phi_3179_ = select(true, false, _e3688);
+                    phi_3198_ = _e3687;
+                    phi_3199_ = select(true, false, _e3688);
                 } else {
-                    phi_3178_ = type_34();
-                    phi_3179_ = true;
+                    phi_3198_ = type_34();
+                    phi_3199_ = true;
                 }
-                let _e3691 = phi_3178_;
-                let _e3693 = phi_3179_;
-                phi_3180_ = _e3691;
-                phi_3181_ = _e3693;
+                let _e3691 = phi_3198_;
+                let _e3693 = phi_3199_;
+                phi_3200_ = _e3691;
+                phi_3201_ = _e3693;
             } else {
-                phi_3180_ = type_34();
-                phi_3181_ = true;
+                phi_3200_ = type_34();
+                phi_3201_ = true;
             }
-            let _e3695 = phi_3180_;
-            let _e3697 = phi_3181_;
+            let _e3695 = phi_3200_;
+            let _e3697 = phi_3201_;
             if _e3697 {
-                phi_3186_ = type_34(0u, type_34().member_1);
+                phi_3206_ = type_34(0u, type_34().member_1);
             } else {
-                phi_3186_ = _e3695;
+                phi_3206_ = _e3695;
             }
-            let _e3702 = phi_3186_;
+            let _e3702 = phi_3206_;
             local_323 = _e3702.member_1;
             if (bitcast<i32>(_e3702.member) != 0i) {
                 let _e3758 = local_323;
@@ -5159,11 +5159,11 @@ fn function_() {
                 }
                 let _e3770 = local_326;
                 let _e3772 = global_10[_e3770];
-                phi_3209_ = 1u;
-                phi_3212_ = _e3772;
+                phi_3233_ = 1u;
+                phi_3236_ = _e3772;
                 loop {
-                    let _e3774 = phi_3209_;
-                    let _e3776 = phi_3212_;
+                    let _e3774 = phi_3233_;
+                    let _e3776 = phi_3236_;
                     local_327 = _e3774;
                     local_328 = _e3776;
                     let _e3777 = local_327;
@@ -5182,25 +5182,25 @@ fn function_() {
                             let _e3787 = local_328;
                             let _e3789 = local_330;
                             let _e3790 = local_328;
-                            phi_3230_ = select(_e3790, _e3789, (_e3786 > _e3787));
+                            phi_3254_ = select(_e3790, _e3789, (_e3786 > _e3787));
                         } else {
-                            phi_3230_ = _e3776;
+                            phi_3254_ = _e3776;
                         }
-                        let _e3793 = phi_3230_;
+                        let _e3793 = phi_3254_;
                         let _e3794 = local_327;
-                        phi_3210_ = (_e3794 * 2u);
-                        phi_3213_ = _e3793;
+                        phi_3234_ = (_e3794 * 2u);
+                        phi_3237_ = _e3793;
                     } else {
-                        phi_3210_ = u32();
-                        phi_3213_ = u32();
+                        phi_3234_ = u32();
+                        phi_3237_ = u32();
                     }
-                    let _e3797 = phi_3210_;
-                    let _e3799 = phi_3213_;
+                    let _e3797 = phi_3234_;
+                    let _e3799 = phi_3237_;
                     continue;
                     continuing {
                         let _e3800 = local_329;
-                        phi_3209_ = _e3797;
-                        phi_3212_ = _e3799;
+                        phi_3233_ = _e3797;
+                        phi_3236_ = _e3799;
                         break if !(_e3800);
                     }
                 }
@@ -5216,15 +5216,15 @@ fn function_() {
                 global_10[_e3805] = _e3807;
                 storageBarrier();
                 workgroupBarrier();
-                phi_3241_ = 256u;
-                phi_3244_ = 320u;
-                phi_3245_ = 64u;
-                phi_3247_ = 0u;
+                phi_3266_ = 256u;
+                phi_3269_ = 320u;
+                phi_3270_ = 64u;
+                phi_3272_ = 0u;
                 loop {
-                    let _e3809 = phi_3241_;
-                    let _e3811 = phi_3244_;
-                    let _e3813 = phi_3245_;
-                    let _e3815 = phi_3247_;
+                    let _e3809 = phi_3266_;
+                    let _e3811 = phi_3269_;
+                    let _e3813 = phi_3270_;
+                    let _e3815 = phi_3272_;
                     local_332 = _e3809;
                     local_333 = _e3811;
                     local_334 = _e3813;
@@ -5254,21 +5254,21 @@ fn function_() {
                             local_340 = _e3833;
                             if (_e3833 < 384u) {
                             } else {
-                                phi_6333_ = true;
+                                phi_6363_ = true;
                                 break;
                             }
                             let _e3835 = local_340;
                             let _e3837 = global_10[_e3835];
-                            phi_3275_ = _e3837;
+                            phi_3300_ = _e3837;
                         } else {
-                            phi_3275_ = 0u;
+                            phi_3300_ = 0u;
                         }
-                        let _e3839 = phi_3275_;
-                        phi_3277_ = 1u;
-                        phi_3280_ = _e3839;
+                        let _e3839 = phi_3300_;
+                        phi_3306_ = 1u;
+                        phi_3309_ = _e3839;
                         loop {
-                            let _e3841 = phi_3277_;
-                            let _e3843 = phi_3280_;
+                            let _e3841 = phi_3306_;
+                            let _e3843 = phi_3309_;
                             local_341 = _e3841;
                             local_342 = _e3843;
                             let _e3844 = local_341;
@@ -5287,25 +5287,25 @@ fn function_() {
                                     let _e3854 = local_342;
                                     let _e3856 = local_344;
                                     let _e3857 = local_342;
-                                    phi_3298_ = select(_e3857, _e3856, (_e3853 > _e3854));
+                                    phi_3327_ = select(_e3857, _e3856, (_e3853 > _e3854));
                                 } else {
-                                    phi_3298_ = _e3843;
+                                    phi_3327_ = _e3843;
                                 }
-                                let _e3860 = phi_3298_;
+                                let _e3860 = phi_3327_;
                                 let _e3861 = local_341;
-                                phi_3278_ = (_e3861 * 2u);
-                                phi_3281_ = _e3860;
+                                phi_3307_ = (_e3861 * 2u);
+                                phi_3310_ = _e3860;
                             } else {
-                                phi_3278_ = u32();
-                                phi_3281_ = u32();
+                                phi_3307_ = u32();
+                                phi_3310_ = u32();
                             }
-                            let _e3864 = phi_3278_;
-                            let _e3866 = phi_3281_;
+                            let _e3864 = phi_3307_;
+                            let _e3866 = phi_3310_;
                             continue;
                             continuing {
                                 let _e3867 = local_343;
-                                phi_3277_ = _e3864;
-                                phi_3280_ = _e3866;
+                                phi_3306_ = _e3864;
+                                phi_3309_ = _e3866;
                                 break if !(_e3867);
                             }
                         }
@@ -5317,7 +5317,7 @@ fn function_() {
                             local_345 = _e3872;
                             if (_e3872 < 384u) {
                             } else {
-                                phi_6333_ = true;
+                                phi_6363_ = true;
                                 break;
                             }
                             let _e3874 = local_345;
@@ -5329,42 +5329,42 @@ fn function_() {
                         let _e3877 = local_332;
                         let _e3878 = local_338;
                         let _e3880 = local_335;
-                        phi_3242_ = (_e3877 + _e3878);
-                        phi_3246_ = _e3823;
-                        phi_3248_ = (_e3880 + 1u);
+                        phi_3267_ = (_e3877 + _e3878);
+                        phi_3271_ = _e3823;
+                        phi_3273_ = (_e3880 + 1u);
                     } else {
-                        phi_3242_ = u32();
-                        phi_3246_ = u32();
-                        phi_3248_ = u32();
+                        phi_3267_ = u32();
+                        phi_3271_ = u32();
+                        phi_3273_ = u32();
                     }
-                    let _e3883 = phi_3242_;
-                    let _e3885 = phi_3246_;
-                    let _e3887 = phi_3248_;
+                    let _e3883 = phi_3267_;
+                    let _e3885 = phi_3271_;
+                    let _e3887 = phi_3273_;
                     continue;
                     continuing {
                         let _e3888 = local_336;
-                        phi_3241_ = _e3883;
-                        phi_3244_ = _e3809;
-                        phi_3245_ = _e3885;
-                        phi_3247_ = _e3887;
-                        phi_6333_ = _e3671;
+                        phi_3266_ = _e3883;
+                        phi_3269_ = _e3809;
+                        phi_3270_ = _e3885;
+                        phi_3272_ = _e3887;
+                        phi_6363_ = _e3671;
                         break if !(_e3888);
                     }
                 }
-                let _e3891 = phi_6333_;
+                let _e3891 = phi_6363_;
                 if _e3891 {
                     break;
                 }
                 let _e6657 = local_662;
-                phi_3315_ = _e6657;
+                phi_3345_ = _e6657;
                 let _e6660 = local_663;
-                phi_3318_ = _e6660;
+                phi_3348_ = _e6660;
                 let _e6663 = local_664;
-                phi_3320_ = _e6663;
+                phi_3350_ = _e6663;
                 loop {
-                    let _e3893 = phi_3315_;
-                    let _e3895 = phi_3318_;
-                    let _e3897 = phi_3320_;
+                    let _e3893 = phi_3345_;
+                    let _e3895 = phi_3348_;
+                    let _e3897 = phi_3350_;
                     local_346 = _e3893;
                     local_347 = _e3895;
                     local_348 = _e3897;
@@ -5380,13 +5380,13 @@ fn function_() {
                         local_351 = _e3904;
                         let _e3905 = local_348;
                         if (_e3905 == 1u) {
-                            phi_3335_ = 320u;
+                            phi_3365_ = 320u;
                         } else {
                             let _e3907 = local_346;
                             let _e3908 = local_351;
-                            phi_3335_ = (_e3907 - _e3908);
+                            phi_3365_ = (_e3907 - _e3908);
                         }
-                        let _e3911 = phi_3335_;
+                        let _e3911 = phi_3365_;
                         local_352 = _e3911;
                         let _e3912 = local;
                         let _e3913 = local_323;
@@ -5404,7 +5404,7 @@ fn function_() {
                                 local_354 = _e3927;
                                 if (_e3927 < 384u) {
                                 } else {
-                                    phi_6346_ = true;
+                                    phi_6376_ = true;
                                     break;
                                 }
                                 let _e3929 = local_354;
@@ -5415,7 +5415,7 @@ fn function_() {
                                 local_356 = _e3933;
                                 if _e3933 {
                                 } else {
-                                    phi_6346_ = true;
+                                    phi_6376_ = true;
                                     break;
                                 }
                                 let _e3934 = local_353;
@@ -5426,7 +5426,7 @@ fn function_() {
                                 let _e3941 = local_356;
                                 if _e3941 {
                                 } else {
-                                    phi_6346_ = true;
+                                    phi_6376_ = true;
                                     break;
                                 }
                                 let _e3942 = local_615;
@@ -5436,39 +5436,39 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e3943 = local_348;
-                        phi_3316_ = _e3911;
-                        phi_3319_ = _e3904;
-                        phi_3321_ = (_e3943 - 1u);
+                        phi_3346_ = _e3911;
+                        phi_3349_ = _e3904;
+                        phi_3351_ = (_e3943 - 1u);
                     } else {
-                        phi_3316_ = u32();
-                        phi_3319_ = u32();
-                        phi_3321_ = u32();
+                        phi_3346_ = u32();
+                        phi_3349_ = u32();
+                        phi_3351_ = u32();
                     }
-                    let _e3946 = phi_3316_;
-                    let _e3948 = phi_3319_;
-                    let _e3950 = phi_3321_;
+                    let _e3946 = phi_3346_;
+                    let _e3948 = phi_3349_;
+                    let _e3950 = phi_3351_;
                     continue;
                     continuing {
                         let _e3951 = local_349;
-                        phi_3315_ = _e3946;
-                        phi_3318_ = _e3948;
-                        phi_3320_ = _e3950;
-                        phi_6346_ = _e3891;
+                        phi_3345_ = _e3946;
+                        phi_3348_ = _e3948;
+                        phi_3350_ = _e3950;
+                        phi_6376_ = _e3891;
                         break if !(_e3951);
                     }
                 }
-                let _e3954 = phi_6346_;
+                let _e3954 = phi_6376_;
                 if _e3954 {
                     break;
                 }
-                phi_6396_ = _e3954;
-                phi_3434_ = 320u;
+                phi_6391_ = _e3954;
+                phi_3464_ = 320u;
             } else {
-                phi_3376_ = 1u;
-                phi_3379_ = 256u;
+                phi_3406_ = 1u;
+                phi_3409_ = 256u;
                 loop {
-                    let _e3708 = phi_3376_;
-                    let _e3710 = phi_3379_;
+                    let _e3708 = phi_3406_;
+                    let _e3710 = phi_3409_;
                     local_357 = _e3708;
                     local_358 = _e3710;
                     local_665 = _e3710;
@@ -5485,7 +5485,7 @@ fn function_() {
                         local_360 = _e3718;
                         if (_e3718 < 384u) {
                         } else {
-                            phi_6321_ = true;
+                            phi_6351_ = true;
                             break;
                         }
                         let _e3720 = local_360;
@@ -5501,18 +5501,18 @@ fn function_() {
                             local_362 = _e3730;
                             if (_e3730 < 384u) {
                             } else {
-                                phi_6321_ = true;
+                                phi_6351_ = true;
                                 break;
                             }
                             let _e3732 = local_362;
                             let _e3734 = global_10[_e3732];
                             let _e3735 = local_361;
                             let _e3737 = local_361;
-                            phi_3419_ = select(_e3737, _e3734, (_e3734 > _e3735));
+                            phi_3449_ = select(_e3737, _e3734, (_e3734 > _e3735));
                         } else {
-                            phi_3419_ = _e3722;
+                            phi_3449_ = _e3722;
                         }
-                        let _e3740 = phi_3419_;
+                        let _e3740 = phi_3449_;
                         local_363 = _e3740;
                         let _e3741 = local_614;
                         let _e3742 = local;
@@ -5520,7 +5520,7 @@ fn function_() {
                         local_364 = _e3743;
                         if (_e3743 < 384u) {
                         } else {
-                            phi_6321_ = true;
+                            phi_6351_ = true;
                             break;
                         }
                         let _e3745 = local_364;
@@ -5529,51 +5529,51 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e3748 = local_357;
-                        phi_3377_ = (_e3748 * 2u);
-                        phi_3380_ = _e3715;
+                        phi_3407_ = (_e3748 * 2u);
+                        phi_3410_ = _e3715;
                     } else {
-                        phi_3377_ = u32();
-                        phi_3380_ = u32();
+                        phi_3407_ = u32();
+                        phi_3410_ = u32();
                     }
-                    let _e3751 = phi_3377_;
-                    let _e3753 = phi_3380_;
+                    let _e3751 = phi_3407_;
+                    let _e3753 = phi_3410_;
                     continue;
                     continuing {
                         let _e3754 = local_359;
-                        phi_3376_ = _e3751;
-                        phi_3379_ = _e3753;
-                        phi_6321_ = _e3671;
+                        phi_3406_ = _e3751;
+                        phi_3409_ = _e3753;
+                        phi_6351_ = _e3671;
                         break if !(_e3754);
                     }
                 }
-                let _e3757 = phi_6321_;
+                let _e3757 = phi_6351_;
                 if _e3757 {
                     break;
                 }
-                phi_6396_ = _e3757;
+                phi_6391_ = _e3757;
                 let _e6672 = local_665;
-                phi_3434_ = _e6672;
+                phi_3464_ = _e6672;
             }
-            let _e3956 = phi_6396_;
-            let _e3958 = phi_3434_;
+            let _e3956 = phi_6391_;
+            let _e3958 = phi_3464_;
             local_365 = _e3958;
             let _e3959 = local_16;
             if _e3959 {
                 let _e3960 = local_15;
-                phi_3452_ = (_e3960 + 1u);
+                phi_3482_ = (_e3960 + 1u);
             } else {
-                phi_3452_ = _e756;
+                phi_3482_ = _e756;
             }
-            let _e3963 = phi_3452_;
+            let _e3963 = phi_3482_;
             let _e3964 = (_e3963 / 8u);
             local_366 = _e3964;
             if ((_e3963 % 8u) > 0u) {
                 let _e3967 = local_366;
-                phi_3468_ = (_e3967 + 1u);
+                phi_3498_ = (_e3967 + 1u);
             } else {
-                phi_3468_ = _e3964;
+                phi_3498_ = _e3964;
             }
-            let _e3970 = phi_3468_;
+            let _e3970 = phi_3498_;
             let _e3971 = local_13;
             let _e3973 = local_12;
             local_367 = (66u * ((_e3971 * _e3970) + _e3973));
@@ -5590,7 +5590,7 @@ fn function_() {
             local_369 = _e3982;
             let _e3983 = local;
             if (_e3983 == 0u) {
-                phi_3494_ = _e3982;
+                phi_3524_ = _e3982;
             } else {
                 let _e3985 = local_368;
                 let _e3986 = (_e3985 - 1u);
@@ -5602,23 +5602,23 @@ fn function_() {
                 let _e3988 = local_370;
                 let _e3990 = global_10[_e3988];
                 let _e3991 = local_369;
-                phi_3494_ = (_e3991 - _e3990);
+                phi_3524_ = (_e3991 - _e3990);
             }
-            let _e3994 = phi_3494_;
+            let _e3994 = phi_3524_;
             if (_e3994 == 1u) {
                 let _e3996 = local_369;
                 if (_e3996 <= 8u) {
-                    phi_6392_ = _e3956;
-                    phi_3510_ = 0u;
-                    phi_3513_ = 0u;
-                    phi_3515_ = array<f32, 3>(0f, 0f, 0f);
-                    phi_3517_ = 340282350000000000000000000000000000000f;
+                    phi_6387_ = _e3956;
+                    phi_3540_ = 0u;
+                    phi_3543_ = 0u;
+                    phi_3545_ = array<f32, 3>(0f, 0f, 0f);
+                    phi_3547_ = 340282350000000000000000000000000000000f;
                     loop {
-                        let _e3999 = phi_6392_;
-                        let _e4001 = phi_3510_;
-                        let _e4003 = phi_3513_;
-                        let _e4005 = phi_3515_;
-                        let _e4007 = phi_3517_;
+                        let _e3999 = phi_6387_;
+                        let _e4001 = phi_3540_;
+                        let _e4003 = phi_3543_;
+                        let _e4005 = phi_3545_;
+                        let _e4007 = phi_3547_;
                         local_371 = _e4001;
                         local_372 = _e4003;
                         local_373 = _e4005;
@@ -5630,15 +5630,15 @@ fn function_() {
                             let _e4010 = local_374;
                             let _e4012 = local_374;
                             local_376 = (4f * select(0.25f, _e4012, (_e4010 > 0.25f)));
-                            phi_3532_ = 0u;
-                            phi_3535_ = _e4003;
-                            phi_3537_ = _e4005;
-                            phi_3539_ = _e4007;
+                            phi_3562_ = 0u;
+                            phi_3565_ = _e4003;
+                            phi_3567_ = _e4005;
+                            phi_3569_ = _e4007;
                             loop {
-                                let _e4016 = phi_3532_;
-                                let _e4018 = phi_3535_;
-                                let _e4020 = phi_3537_;
-                                let _e4022 = phi_3539_;
+                                let _e4016 = phi_3562_;
+                                let _e4018 = phi_3565_;
+                                let _e4020 = phi_3567_;
+                                let _e4022 = phi_3569_;
                                 local_377 = _e4016;
                                 local_378 = _e4018;
                                 local_379 = _e4020;
@@ -5656,62 +5656,62 @@ fn function_() {
                                     let _e4027 = local_377;
                                     local_383 = (_e4027 / 4u);
                                     if (_e4026 == 1u) {
-                                        phi_3569_ = i32();
-                                        phi_3570_ = i32();
-                                        phi_3571_ = true;
+                                        phi_3599_ = i32();
+                                        phi_3600_ = i32();
+                                        phi_3601_ = true;
                                     } else {
                                         let _e4030 = local_382;
                                         let _e4031 = (_e4030 == 2u);
                                         if _e4031 {
-                                            phi_3567_ = i32();
-                                            phi_3568_ = i32();
+                                            phi_3597_ = i32();
+                                            phi_3598_ = i32();
                                         } else {
                                             let _e4032 = local_21;
                                             let _e4036 = local_382;
                                             let _e4039 = local_22;
                                             let _e4043 = local_383;
-                                            phi_3567_ = (((2i * bitcast<i32>(_e4039)) - 1i) + bitcast<i32>(_e4043));
-                                            phi_3568_ = (((2i * bitcast<i32>(_e4032)) - 1i) + bitcast<i32>(_e4036));
+                                            phi_3597_ = (((2i * bitcast<i32>(_e4039)) - 1i) + bitcast<i32>(_e4043));
+                                            phi_3598_ = (((2i * bitcast<i32>(_e4032)) - 1i) + bitcast<i32>(_e4036));
                                         }
-                                        let _e4047 = phi_3567_;
-                                        let _e4049 = phi_3568_;
-                                        phi_3569_ = _e4047;
-                                        phi_3570_ = _e4049;
-                                        phi_3571_ = _e4031;
+                                        let _e4047 = phi_3597_;
+                                        let _e4049 = phi_3598_;
+                                        phi_3599_ = _e4047;
+                                        phi_3600_ = _e4049;
+                                        phi_3601_ = _e4031;
                                     }
-                                    let _e4051 = phi_3569_;
-                                    let _e4053 = phi_3570_;
-                                    let _e4055 = phi_3571_;
+                                    let _e4051 = phi_3599_;
+                                    let _e4053 = phi_3600_;
+                                    let _e4055 = phi_3601_;
                                     if _e4055 {
                                         let _e4056 = local_383;
                                         if (_e4056 == 1u) {
-                                            phi_3594_ = i32();
-                                            phi_3595_ = i32();
-                                            phi_3596_ = false;
+                                            phi_3624_ = i32();
+                                            phi_3625_ = i32();
+                                            phi_3626_ = false;
                                         } else {
                                             let _e4058 = local_383;
                                             let _e4060 = local_21;
                                             let _e4064 = local_382;
                                             let _e4067 = local_22;
                                             let _e4071 = local_383;
-                                            phi_3594_ = (((2i * bitcast<i32>(_e4067)) - 1i) + bitcast<i32>(_e4071));
-                                            phi_3595_ = (((2i * bitcast<i32>(_e4060)) - 1i) + bitcast<i32>(_e4064));
-                                            phi_3596_ = select(true, false, (_e4058 == 2u));
+                                            phi_3624_ = (((2i * bitcast<i32>(_e4067)) - 1i) + bitcast<i32>(_e4071));
+                                            phi_3625_ = (((2i * bitcast<i32>(_e4060)) - 1i) + bitcast<i32>(_e4064));
+                                            phi_3626_ = select(true, false, (_e4058 == 2u));
                                         }
-                                        let _e4076 = phi_3594_;
-                                        let _e4078 = phi_3595_;
-                                        let _e4080 = phi_3596_;
-                                        phi_3597_ = _e4076;
-                                        phi_3598_ = _e4078;
-                                        phi_3599_ = _e4080;
+                                        let _e4076 = phi_3624_;
+                                        let _e4078 = phi_3625_;
+                                        let _e4080 = phi_3626_;
+                                        phi_3627_ = _e4076;
+                                        phi_3628_ = _e4078;
+                                        phi_3629_ = _e4080;
                                     } else {
-                                        phi_3597_ = _e4051;
-                                        phi_3598_ = _e4053;
-                                        phi_3599_ = true;
+                                        phi_3627_ = _e4051;
+                                        phi_3628_ = _e4053;
+                                        phi_3629_ = true;
                                     }
-                                    let _e4082 = phi_3597_;
-                                    let _e4084 = phi_3598_;
-                                    let _e4086 = phi_3599_;
+                                    let _e4082 = phi_3627_;
+                                    let _e4084 = phi_3628_;
+                                    let _e4086 = phi_3629_;
                                     local_384 = _e4082;
                                     local_385 = _e4084;
                                     if _e4086 {
@@ -5739,7 +5739,7 @@ fn function_() {
                                                         let _e4105 = local_5;
                                                         if (_e4104 < _e4105) {
                                                         } else {
-                                                            phi_6353_ = true;
+                                                            phi_6383_ = true;
                                                             break;
                                                         }
                                                         let _e4107 = local_389;
@@ -5751,7 +5751,7 @@ fn function_() {
                                                         let _e4114 = local_5;
                                                         if (_e4113 < _e4114) {
                                                         } else {
-                                                            phi_6353_ = true;
+                                                            phi_6383_ = true;
                                                             break;
                                                         }
                                                         let _e4116 = local_391;
@@ -5763,7 +5763,7 @@ fn function_() {
                                                         let _e4123 = local_5;
                                                         if (_e4122 < _e4123) {
                                                         } else {
-                                                            phi_6353_ = true;
+                                                            phi_6383_ = true;
                                                             break;
                                                         }
                                                         let _e4125 = local_393;
@@ -5772,74 +5772,74 @@ fn function_() {
                                                         let _e4130 = local_390;
                                                         if (_e4130 > 1267650600000000000000000000000f) {
                                                             let _e4132 = local_390;
-                                                            phi_3669_ = select(true, false, (_e4132 <= 340282350000000000000000000000000000000f));
+                                                            phi_3699_ = select(true, false, (_e4132 <= 340282350000000000000000000000000000000f));
                                                         } else {
-                                                            phi_3669_ = true;
+                                                            phi_3699_ = true;
                                                         }
-                                                        let _e4136 = phi_3669_;
+                                                        let _e4136 = phi_3699_;
                                                         if _e4136 {
                                                             let _e4137 = local_390;
                                                             if (_e4137 < 0.000000000000000000000000000000000000011754944f) {
                                                                 let _e4139 = local_390;
-                                                                phi_3683_ = select(true, false, (_e4139 >= -340282350000000000000000000000000000000f));
+                                                                phi_3713_ = select(true, false, (_e4139 >= -340282350000000000000000000000000000000f));
                                                             } else {
-                                                                phi_3683_ = true;
+                                                                phi_3713_ = true;
                                                             }
-                                                            let _e4143 = phi_3683_;
+                                                            let _e4143 = phi_3713_;
                                                             let _e4144 = local_390;
-                                                            phi_3688_ = select(0f, _e4144, _e4143);
+                                                            phi_3718_ = select(0f, _e4144, _e4143);
                                                         } else {
-                                                            phi_3688_ = 1267650600000000000000000000000f;
+                                                            phi_3718_ = 1267650600000000000000000000000f;
                                                         }
-                                                        let _e4147 = phi_3688_;
+                                                        let _e4147 = phi_3718_;
                                                         local_395 = _e4147;
                                                         let _e4148 = local_392;
                                                         if (_e4148 > 1267650600000000000000000000000f) {
                                                             let _e4150 = local_392;
-                                                            phi_3698_ = select(true, false, (_e4150 <= 340282350000000000000000000000000000000f));
+                                                            phi_3728_ = select(true, false, (_e4150 <= 340282350000000000000000000000000000000f));
                                                         } else {
-                                                            phi_3698_ = true;
+                                                            phi_3728_ = true;
                                                         }
-                                                        let _e4154 = phi_3698_;
+                                                        let _e4154 = phi_3728_;
                                                         if _e4154 {
                                                             let _e4155 = local_392;
                                                             if (_e4155 < 0.000000000000000000000000000000000000011754944f) {
                                                                 let _e4157 = local_392;
-                                                                phi_3712_ = select(true, false, (_e4157 >= -340282350000000000000000000000000000000f));
+                                                                phi_3742_ = select(true, false, (_e4157 >= -340282350000000000000000000000000000000f));
                                                             } else {
-                                                                phi_3712_ = true;
+                                                                phi_3742_ = true;
                                                             }
-                                                            let _e4161 = phi_3712_;
+                                                            let _e4161 = phi_3742_;
                                                             let _e4162 = local_392;
-                                                            phi_3717_ = select(0f, _e4162, _e4161);
+                                                            phi_3747_ = select(0f, _e4162, _e4161);
                                                         } else {
-                                                            phi_3717_ = 1267650600000000000000000000000f;
+                                                            phi_3747_ = 1267650600000000000000000000000f;
                                                         }
-                                                        let _e4165 = phi_3717_;
+                                                        let _e4165 = phi_3747_;
                                                         local_396 = _e4165;
                                                         let _e4166 = local_394;
                                                         if (_e4166 > 1267650600000000000000000000000f) {
                                                             let _e4168 = local_394;
-                                                            phi_3727_ = select(true, false, (_e4168 <= 340282350000000000000000000000000000000f));
+                                                            phi_3757_ = select(true, false, (_e4168 <= 340282350000000000000000000000000000000f));
                                                         } else {
-                                                            phi_3727_ = true;
+                                                            phi_3757_ = true;
                                                         }
-                                                        let _e4172 = phi_3727_;
+                                                        let _e4172 = phi_3757_;
                                                         if _e4172 {
                                                             let _e4173 = local_394;
                                                             if (_e4173 < 0.000000000000000000000000000000000000011754944f) {
                                                                 let _e4175 = local_394;
-                                                                phi_3741_ = select(true, false, (_e4175 >= -340282350000000000000000000000000000000f));
+                                                                phi_3771_ = select(true, false, (_e4175 >= -340282350000000000000000000000000000000f));
                                                             } else {
-                                                                phi_3741_ = true;
+                                                                phi_3771_ = true;
                                                             }
-                                                            let _e4179 = phi_3741_;
+                                                            let _e4179 = phi_3771_;
                                                             let _e4180 = local_394;
-                                                            phi_3746_ = select(0f, _e4180, _e4179);
+                                                            phi_3776_ = select(0f, _e4180, _e4179);
                                                         } else {
-                                                            phi_3746_ = 1267650600000000000000000000000f;
+                                                            phi_3776_ = 1267650600000000000000000000000f;
                                                         }
-                                                        let _e4183 = phi_3746_;
+                                                        let _e4183 = phi_3776_;
                                                         local_397 = _e4183;
                                                         let _e4184 = local_395;
                                                         let _e4185 = local_396;
@@ -5848,7 +5848,7 @@ fn function_() {
                                                         let _e4188 = local_6;
                                                         if (_e4187 < _e4188) {
                                                         } else {
-                                                            phi_6353_ = true;
+                                                            phi_6383_ = true;
                                                             break;
                                                         }
                                                         let _e4190 = local_388;
@@ -5864,52 +5864,52 @@ fn function_() {
                                                                     let _e4208 = bitcast<u32>(_e4207);
                                                                     local_400 = _e4208;
                                                                     if (_e4208 == 0u) {
-                                                                        phi_3780_ = false;
+                                                                        phi_3810_ = false;
                                                                     } else {
                                                                         let _e4210 = local_400;
-                                                                        phi_3780_ = (_e4210 <= 2139095040u);
+                                                                        phi_3810_ = (_e4210 <= 2139095040u);
                                                                     }
-                                                                    let _e4213 = phi_3780_;
+                                                                    let _e4213 = phi_3810_;
                                                                     local_401 = _e4213;
                                                                     if _e4213 {
                                                                         let _e4214 = local_398;
                                                                         let _e4215 = local_399;
-                                                                        phi_3786_ = type_23(1u, type_22(_e4214, _e4215));
+                                                                        phi_3816_ = type_23(1u, type_22(_e4214, _e4215));
                                                                     } else {
-                                                                        phi_3786_ = type_23();
+                                                                        phi_3816_ = type_23();
                                                                     }
-                                                                    let _e4219 = phi_3786_;
+                                                                    let _e4219 = phi_3816_;
                                                                     let _e4220 = local_401;
-                                                                    phi_3788_ = _e4219;
-                                                                    phi_3789_ = select(true, false, _e4220);
+                                                                    phi_3818_ = _e4219;
+                                                                    phi_3819_ = select(true, false, _e4220);
                                                                 } else {
-                                                                    phi_3788_ = type_23();
-                                                                    phi_3789_ = true;
+                                                                    phi_3818_ = type_23();
+                                                                    phi_3819_ = true;
                                                                 }
-                                                                let _e4223 = phi_3788_;
-                                                                let _e4225 = phi_3789_;
-                                                                phi_3790_ = _e4223;
-                                                                phi_3791_ = _e4225;
+                                                                let _e4223 = phi_3818_;
+                                                                let _e4225 = phi_3819_;
+                                                                phi_3820_ = _e4223;
+                                                                phi_3821_ = _e4225;
                                                             } else {
-                                                                phi_3790_ = type_23();
-                                                                phi_3791_ = true;
+                                                                phi_3820_ = type_23();
+                                                                phi_3821_ = true;
                                                             }
-                                                            let _e4227 = phi_3790_;
-                                                            let _e4229 = phi_3791_;
-                                                            phi_3792_ = _e4227;
-                                                            phi_3793_ = _e4229;
+                                                            let _e4227 = phi_3820_;
+                                                            let _e4229 = phi_3821_;
+                                                            phi_3822_ = _e4227;
+                                                            phi_3823_ = _e4229;
                                                         } else {
-                                                            phi_3792_ = type_23();
-                                                            phi_3793_ = true;
+                                                            phi_3822_ = type_23();
+                                                            phi_3823_ = true;
                                                         }
-                                                        let _e4231 = phi_3792_;
-                                                        let _e4233 = phi_3793_;
+                                                        let _e4231 = phi_3822_;
+                                                        let _e4233 = phi_3823_;
                                                         if _e4233 {
-                                                            phi_3798_ = type_23(0u, type_23().member_1);
+                                                            phi_3828_ = type_23(0u, type_23().member_1);
                                                         } else {
-                                                            phi_3798_ = _e4231;
+                                                            phi_3828_ = _e4231;
                                                         }
-                                                        let _e4238 = phi_3798_;
+                                                        let _e4238 = phi_3828_;
                                                         local_402 = _e4238;
                                                         if (bitcast<i32>(_e4238.member) != 0i) {
                                                             let _e4242 = local_402;
@@ -5923,9 +5923,9 @@ fn function_() {
                                                                 let _e4278 = local_406;
                                                                 let _e4280 = local_380;
                                                                 let _e4281 = local_406;
-                                                                phi_3840_ = _e4018;
-                                                                phi_3841_ = _e4020;
-                                                                phi_3842_ = select(_e4281, _e4280, (_e4277 < _e4278));
+                                                                phi_3870_ = _e4018;
+                                                                phi_3871_ = _e4020;
+                                                                phi_3872_ = select(_e4281, _e4280, (_e4277 < _e4278));
                                                             } else {
                                                                 let _e4255 = local_406;
                                                                 let _e4256 = local_376;
@@ -5937,162 +5937,162 @@ fn function_() {
                                                                     let _e4266 = local_379;
                                                                     let _e4268 = local_405;
                                                                     let _e4271 = local_378;
-                                                                    phi_3838_ = (_e4271 + 1u);
-                                                                    phi_3839_ = array<f32, 3>((_e4258[0] + _e4260), (_e4262[1] + _e4264), (_e4266[2] + _e4268));
+                                                                    phi_3868_ = (_e4271 + 1u);
+                                                                    phi_3869_ = array<f32, 3>((_e4258[0] + _e4260), (_e4262[1] + _e4264), (_e4266[2] + _e4268));
                                                                 } else {
-                                                                    phi_3838_ = _e4018;
-                                                                    phi_3839_ = _e4020;
+                                                                    phi_3868_ = _e4018;
+                                                                    phi_3869_ = _e4020;
                                                                 }
-                                                                let _e4274 = phi_3838_;
-                                                                let _e4276 = phi_3839_;
-                                                                phi_3840_ = _e4274;
-                                                                phi_3841_ = _e4276;
-                                                                phi_3842_ = _e4022;
+                                                                let _e4274 = phi_3868_;
+                                                                let _e4276 = phi_3869_;
+                                                                phi_3870_ = _e4274;
+                                                                phi_3871_ = _e4276;
+                                                                phi_3872_ = _e4022;
                                                             }
-                                                            let _e4284 = phi_3840_;
-                                                            let _e4286 = phi_3841_;
-                                                            let _e4288 = phi_3842_;
-                                                            phi_3843_ = _e4284;
-                                                            phi_3844_ = _e4286;
-                                                            phi_3845_ = _e4288;
+                                                            let _e4284 = phi_3870_;
+                                                            let _e4286 = phi_3871_;
+                                                            let _e4288 = phi_3872_;
+                                                            phi_3873_ = _e4284;
+                                                            phi_3874_ = _e4286;
+                                                            phi_3875_ = _e4288;
                                                         } else {
-                                                            phi_3843_ = _e4018;
-                                                            phi_3844_ = _e4020;
-                                                            phi_3845_ = _e4022;
+                                                            phi_3873_ = _e4018;
+                                                            phi_3874_ = _e4020;
+                                                            phi_3875_ = _e4022;
                                                         }
-                                                        let _e4290 = phi_3843_;
-                                                        let _e4292 = phi_3844_;
-                                                        let _e4294 = phi_3845_;
-                                                        phi_3846_ = _e4290;
-                                                        phi_3847_ = _e4292;
-                                                        phi_3848_ = _e4294;
+                                                        let _e4290 = phi_3873_;
+                                                        let _e4292 = phi_3874_;
+                                                        let _e4294 = phi_3875_;
+                                                        phi_3876_ = _e4290;
+                                                        phi_3877_ = _e4292;
+                                                        phi_3878_ = _e4294;
                                                     } else {
-                                                        phi_3846_ = _e4018;
-                                                        phi_3847_ = _e4020;
-                                                        phi_3848_ = _e4022;
+                                                        phi_3876_ = _e4018;
+                                                        phi_3877_ = _e4020;
+                                                        phi_3878_ = _e4022;
                                                     }
-                                                    let _e4296 = phi_3846_;
-                                                    let _e4298 = phi_3847_;
-                                                    let _e4300 = phi_3848_;
-                                                    phi_3849_ = _e4296;
-                                                    phi_3850_ = _e4298;
-                                                    phi_3851_ = _e4300;
+                                                    let _e4296 = phi_3876_;
+                                                    let _e4298 = phi_3877_;
+                                                    let _e4300 = phi_3878_;
+                                                    phi_3879_ = _e4296;
+                                                    phi_3880_ = _e4298;
+                                                    phi_3881_ = _e4300;
                                                 } else {
-                                                    phi_3849_ = _e4018;
-                                                    phi_3850_ = _e4020;
-                                                    phi_3851_ = _e4022;
+                                                    phi_3879_ = _e4018;
+                                                    phi_3880_ = _e4020;
+                                                    phi_3881_ = _e4022;
                                                 }
-                                                let _e4302 = phi_3849_;
-                                                let _e4304 = phi_3850_;
-                                                let _e4306 = phi_3851_;
-                                                phi_3852_ = _e4302;
-                                                phi_3853_ = _e4304;
-                                                phi_3854_ = _e4306;
+                                                let _e4302 = phi_3879_;
+                                                let _e4304 = phi_3880_;
+                                                let _e4306 = phi_3881_;
+                                                phi_3882_ = _e4302;
+                                                phi_3883_ = _e4304;
+                                                phi_3884_ = _e4306;
                                             } else {
-                                                phi_3852_ = _e4018;
-                                                phi_3853_ = _e4020;
-                                                phi_3854_ = _e4022;
+                                                phi_3882_ = _e4018;
+                                                phi_3883_ = _e4020;
+                                                phi_3884_ = _e4022;
                                             }
-                                            let _e4308 = phi_3852_;
-                                            let _e4310 = phi_3853_;
-                                            let _e4312 = phi_3854_;
-                                            phi_3855_ = _e4308;
-                                            phi_3856_ = _e4310;
-                                            phi_3857_ = _e4312;
+                                            let _e4308 = phi_3882_;
+                                            let _e4310 = phi_3883_;
+                                            let _e4312 = phi_3884_;
+                                            phi_3885_ = _e4308;
+                                            phi_3886_ = _e4310;
+                                            phi_3887_ = _e4312;
                                         } else {
-                                            phi_3855_ = _e4018;
-                                            phi_3856_ = _e4020;
-                                            phi_3857_ = _e4022;
+                                            phi_3885_ = _e4018;
+                                            phi_3886_ = _e4020;
+                                            phi_3887_ = _e4022;
                                         }
-                                        let _e4314 = phi_3855_;
-                                        let _e4316 = phi_3856_;
-                                        let _e4318 = phi_3857_;
-                                        phi_3858_ = _e4314;
-                                        phi_3859_ = _e4316;
-                                        phi_3860_ = _e4318;
+                                        let _e4314 = phi_3885_;
+                                        let _e4316 = phi_3886_;
+                                        let _e4318 = phi_3887_;
+                                        phi_3888_ = _e4314;
+                                        phi_3889_ = _e4316;
+                                        phi_3890_ = _e4318;
                                     } else {
-                                        phi_3858_ = _e4018;
-                                        phi_3859_ = _e4020;
-                                        phi_3860_ = _e4022;
+                                        phi_3888_ = _e4018;
+                                        phi_3889_ = _e4020;
+                                        phi_3890_ = _e4022;
                                     }
-                                    let _e4320 = phi_3858_;
-                                    let _e4322 = phi_3859_;
-                                    let _e4324 = phi_3860_;
+                                    let _e4320 = phi_3888_;
+                                    let _e4322 = phi_3889_;
+                                    let _e4324 = phi_3890_;
                                     let _e4325 = local_377;
-                                    phi_3533_ = (_e4325 + 1u);
-                                    phi_3536_ = _e4320;
-                                    phi_3538_ = _e4322;
-                                    phi_3540_ = _e4324;
+                                    phi_3563_ = (_e4325 + 1u);
+                                    phi_3566_ = _e4320;
+                                    phi_3568_ = _e4322;
+                                    phi_3570_ = _e4324;
                                 } else {
-                                    phi_3533_ = u32();
-                                    phi_3536_ = u32();
-                                    phi_3538_ = array<f32, 3>();
-                                    phi_3540_ = f32();
+                                    phi_3563_ = u32();
+                                    phi_3566_ = u32();
+                                    phi_3568_ = array<f32, 3>();
+                                    phi_3570_ = f32();
                                 }
-                                let _e4328 = phi_3533_;
-                                let _e4330 = phi_3536_;
-                                let _e4332 = phi_3538_;
-                                let _e4334 = phi_3540_;
+                                let _e4328 = phi_3563_;
+                                let _e4330 = phi_3566_;
+                                let _e4332 = phi_3568_;
+                                let _e4334 = phi_3570_;
                                 continue;
                                 continuing {
                                     let _e4335 = local_381;
-                                    phi_3532_ = _e4328;
-                                    phi_3535_ = _e4330;
-                                    phi_3537_ = _e4332;
-                                    phi_3539_ = _e4334;
-                                    phi_6353_ = _e3999;
+                                    phi_3562_ = _e4328;
+                                    phi_3565_ = _e4330;
+                                    phi_3567_ = _e4332;
+                                    phi_3569_ = _e4334;
+                                    phi_6383_ = _e3999;
                                     break if !(_e4335);
                                 }
                             }
-                            let _e4338 = phi_6353_;
-                            phi_6400_ = _e4338;
+                            let _e4338 = phi_6383_;
+                            phi_6430_ = _e4338;
                             if _e4338 {
                                 break;
                             }
                             let _e4339 = local_371;
-                            phi_6401_ = _e4338;
-                            phi_3511_ = (_e4339 + 1u);
+                            phi_6431_ = _e4338;
+                            phi_3541_ = (_e4339 + 1u);
                             let _e6746 = local_666;
-                            phi_3514_ = _e6746;
+                            phi_3544_ = _e6746;
                             let _e6749 = local_667;
-                            phi_3516_ = _e6749;
+                            phi_3546_ = _e6749;
                             let _e6752 = local_668;
-                            phi_3518_ = _e6752;
+                            phi_3548_ = _e6752;
                         } else {
-                            phi_6401_ = _e3999;
-                            phi_3511_ = u32();
-                            phi_3514_ = u32();
-                            phi_3516_ = array<f32, 3>();
-                            phi_3518_ = f32();
+                            phi_6431_ = _e3999;
+                            phi_3541_ = u32();
+                            phi_3544_ = u32();
+                            phi_3546_ = array<f32, 3>();
+                            phi_3548_ = f32();
                         }
-                        let _e4342 = phi_6401_;
-                        let _e4344 = phi_3511_;
-                        let _e4346 = phi_3514_;
-                        let _e4348 = phi_3516_;
-                        let _e4350 = phi_3518_;
+                        let _e4342 = phi_6431_;
+                        let _e4344 = phi_3541_;
+                        let _e4346 = phi_3544_;
+                        let _e4348 = phi_3546_;
+                        let _e4350 = phi_3548_;
                         continue;
                         continuing {
                             let _e4351 = local_375;
-                            phi_6392_ = _e4342;
-                            phi_3510_ = _e4344;
-                            phi_3513_ = _e4346;
-                            phi_3515_ = _e4348;
-                            phi_3517_ = _e4350;
-                            phi_6400_ = _e4342;
+                            phi_6387_ = _e4342;
+                            phi_3540_ = _e4344;
+                            phi_3543_ = _e4346;
+                            phi_3545_ = _e4348;
+                            phi_3547_ = _e4350;
+                            phi_6430_ = _e4342;
                             break if !(_e4351);
                         }
                     }
-                    let _e4354 = phi_6400_;
+                    let _e4354 = phi_6430_;
                     if _e4354 {
                         break;
                     }
                     let _e4355 = local_372;
                     if (_e4355 == 0u) {
                         local_628 = array<f32, 4>(0f, 0f, 0f, 0f);
-                        phi_6625_ = _e4354;
-                        phi_6545_ = 0f;
-                        phi_6497_ = 0f;
-                        phi_6449_ = 0f;
+                        phi_6640_ = _e4354;
+                        phi_6575_ = 0f;
+                        phi_6527_ = 0f;
+                        phi_6479_ = 0f;
                     } else {
                         let _e4357 = local_372;
                         let _e4359 = (1f / f32(_e4357));
@@ -6107,9 +6107,9 @@ fn function_() {
                         local_409 = _e4368;
                         local_410 = (((0.2126f * _e4362) + (0.7152f * _e4365)) + (0.0722f * _e4368));
                         local_628 = array<f32, 4>(0f, 0f, 0f, 0f);
-                        phi_3888_ = 0u;
+                        phi_3918_ = 0u;
                         loop {
-                            let _e4375 = phi_3888_;
+                            let _e4375 = phi_3918_;
                             local_411 = _e4375;
                             let _e4376 = local_411;
                             let _e4377 = (_e4376 < 4u);
@@ -6137,7 +6137,7 @@ fn function_() {
                                         let _e4399 = local_5;
                                         if (_e4398 < _e4399) {
                                         } else {
-                                            phi_6402_ = true;
+                                            phi_6432_ = true;
                                             break;
                                         }
                                         let _e4401 = local_416;
@@ -6149,7 +6149,7 @@ fn function_() {
                                         let _e4408 = local_5;
                                         if (_e4407 < _e4408) {
                                         } else {
-                                            phi_6402_ = true;
+                                            phi_6432_ = true;
                                             break;
                                         }
                                         let _e4410 = local_418;
@@ -6161,7 +6161,7 @@ fn function_() {
                                         let _e4417 = local_5;
                                         if (_e4416 < _e4417) {
                                         } else {
-                                            phi_6402_ = true;
+                                            phi_6432_ = true;
                                             break;
                                         }
                                         let _e4419 = local_420;
@@ -6170,74 +6170,74 @@ fn function_() {
                                         let _e4424 = local_417;
                                         if (_e4424 > 1267650600000000000000000000000f) {
                                             let _e4426 = local_417;
-                                            phi_3957_ = select(true, false, (_e4426 <= 340282350000000000000000000000000000000f));
+                                            phi_3987_ = select(true, false, (_e4426 <= 340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_3957_ = true;
+                                            phi_3987_ = true;
                                         }
-                                        let _e4430 = phi_3957_;
+                                        let _e4430 = phi_3987_;
                                         if _e4430 {
                                             let _e4431 = local_417;
                                             if (_e4431 < 0.000000000000000000000000000000000000011754944f) {
                                                 let _e4433 = local_417;
-                                                phi_3971_ = select(true, false, (_e4433 >= -340282350000000000000000000000000000000f));
+                                                phi_4001_ = select(true, false, (_e4433 >= -340282350000000000000000000000000000000f));
                                             } else {
-                                                phi_3971_ = true;
+                                                phi_4001_ = true;
                                             }
-                                            let _e4437 = phi_3971_;
+                                            let _e4437 = phi_4001_;
                                             let _e4438 = local_417;
-                                            phi_3976_ = select(0f, _e4438, _e4437);
+                                            phi_4006_ = select(0f, _e4438, _e4437);
                                         } else {
-                                            phi_3976_ = 1267650600000000000000000000000f;
+                                            phi_4006_ = 1267650600000000000000000000000f;
                                         }
-                                        let _e4441 = phi_3976_;
+                                        let _e4441 = phi_4006_;
                                         local_422 = _e4441;
                                         let _e4442 = local_419;
                                         if (_e4442 > 1267650600000000000000000000000f) {
                                             let _e4444 = local_419;
-                                            phi_3986_ = select(true, false, (_e4444 <= 340282350000000000000000000000000000000f));
+                                            phi_4016_ = select(true, false, (_e4444 <= 340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_3986_ = true;
+                                            phi_4016_ = true;
                                         }
-                                        let _e4448 = phi_3986_;
+                                        let _e4448 = phi_4016_;
                                         if _e4448 {
                                             let _e4449 = local_419;
                                             if (_e4449 < 0.000000000000000000000000000000000000011754944f) {
                                                 let _e4451 = local_419;
-                                                phi_4000_ = select(true, false, (_e4451 >= -340282350000000000000000000000000000000f));
+                                                phi_4030_ = select(true, false, (_e4451 >= -340282350000000000000000000000000000000f));
                                             } else {
-                                                phi_4000_ = true;
+                                                phi_4030_ = true;
                                             }
-                                            let _e4455 = phi_4000_;
+                                            let _e4455 = phi_4030_;
                                             let _e4456 = local_419;
-                                            phi_4005_ = select(0f, _e4456, _e4455);
+                                            phi_4035_ = select(0f, _e4456, _e4455);
                                         } else {
-                                            phi_4005_ = 1267650600000000000000000000000f;
+                                            phi_4035_ = 1267650600000000000000000000000f;
                                         }
-                                        let _e4459 = phi_4005_;
+                                        let _e4459 = phi_4035_;
                                         local_423 = _e4459;
                                         let _e4460 = local_421;
                                         if (_e4460 > 1267650600000000000000000000000f) {
                                             let _e4462 = local_421;
-                                            phi_4015_ = select(true, false, (_e4462 <= 340282350000000000000000000000000000000f));
+                                            phi_4045_ = select(true, false, (_e4462 <= 340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_4015_ = true;
+                                            phi_4045_ = true;
                                         }
-                                        let _e4466 = phi_4015_;
+                                        let _e4466 = phi_4045_;
                                         if _e4466 {
                                             let _e4467 = local_421;
                                             if (_e4467 < 0.000000000000000000000000000000000000011754944f) {
                                                 let _e4469 = local_421;
-                                                phi_4029_ = select(true, false, (_e4469 >= -340282350000000000000000000000000000000f));
+                                                phi_4059_ = select(true, false, (_e4469 >= -340282350000000000000000000000000000000f));
                                             } else {
-                                                phi_4029_ = true;
+                                                phi_4059_ = true;
                                             }
-                                            let _e4473 = phi_4029_;
+                                            let _e4473 = phi_4059_;
                                             let _e4474 = local_421;
-                                            phi_4034_ = select(0f, _e4474, _e4473);
+                                            phi_4064_ = select(0f, _e4474, _e4473);
                                         } else {
-                                            phi_4034_ = 1267650600000000000000000000000f;
+                                            phi_4064_ = 1267650600000000000000000000000f;
                                         }
-                                        let _e4477 = phi_4034_;
+                                        let _e4477 = phi_4064_;
                                         local_424 = _e4477;
                                         let _e4478 = local_422;
                                         let _e4479 = local_423;
@@ -6246,7 +6246,7 @@ fn function_() {
                                         let _e4482 = local_6;
                                         if (_e4481 < _e4482) {
                                         } else {
-                                            phi_6402_ = true;
+                                            phi_6432_ = true;
                                             break;
                                         }
                                         let _e4484 = local_415;
@@ -6262,52 +6262,52 @@ fn function_() {
                                                     let _e4502 = bitcast<u32>(_e4501);
                                                     local_427 = _e4502;
                                                     if (_e4502 == 0u) {
-                                                        phi_4068_ = false;
+                                                        phi_4098_ = false;
                                                     } else {
                                                         let _e4504 = local_427;
-                                                        phi_4068_ = (_e4504 <= 2139095040u);
+                                                        phi_4098_ = (_e4504 <= 2139095040u);
                                                     }
-                                                    let _e4507 = phi_4068_;
+                                                    let _e4507 = phi_4098_;
                                                     local_428 = _e4507;
                                                     if _e4507 {
                                                         let _e4508 = local_425;
                                                         let _e4509 = local_426;
-                                                        phi_4074_ = type_23(1u, type_22(_e4508, _e4509));
+                                                        phi_4104_ = type_23(1u, type_22(_e4508, _e4509));
                                                     } else {
-                                                        phi_4074_ = type_23();
+                                                        phi_4104_ = type_23();
                                                     }
-                                                    let _e4513 = phi_4074_;
+                                                    let _e4513 = phi_4104_;
                                                     let _e4514 = local_428;
-                                                    phi_4076_ = _e4513;
-                                                    phi_4077_ = select(true, false, _e4514);
+                                                    phi_4106_ = _e4513;
+                                                    phi_4107_ = select(true, false, _e4514);
                                                 } else {
-                                                    phi_4076_ = type_23();
-                                                    phi_4077_ = true;
+                                                    phi_4106_ = type_23();
+                                                    phi_4107_ = true;
                                                 }
-                                                let _e4517 = phi_4076_;
-                                                let _e4519 = phi_4077_;
-                                                phi_4078_ = _e4517;
-                                                phi_4079_ = _e4519;
+                                                let _e4517 = phi_4106_;
+                                                let _e4519 = phi_4107_;
+                                                phi_4108_ = _e4517;
+                                                phi_4109_ = _e4519;
                                             } else {
-                                                phi_4078_ = type_23();
-                                                phi_4079_ = true;
+                                                phi_4108_ = type_23();
+                                                phi_4109_ = true;
                                             }
-                                            let _e4521 = phi_4078_;
-                                            let _e4523 = phi_4079_;
-                                            phi_4080_ = _e4521;
-                                            phi_4081_ = _e4523;
+                                            let _e4521 = phi_4108_;
+                                            let _e4523 = phi_4109_;
+                                            phi_4110_ = _e4521;
+                                            phi_4111_ = _e4523;
                                         } else {
-                                            phi_4080_ = type_23();
-                                            phi_4081_ = true;
+                                            phi_4110_ = type_23();
+                                            phi_4111_ = true;
                                         }
-                                        let _e4525 = phi_4080_;
-                                        let _e4527 = phi_4081_;
+                                        let _e4525 = phi_4110_;
+                                        let _e4527 = phi_4111_;
                                         if _e4527 {
-                                            phi_4086_ = type_23(0u, type_23().member_1);
+                                            phi_4116_ = type_23(0u, type_23().member_1);
                                         } else {
-                                            phi_4086_ = _e4525;
+                                            phi_4116_ = _e4525;
                                         }
-                                        let _e4532 = phi_4086_;
+                                        let _e4532 = phi_4116_;
                                         local_429 = _e4532;
                                         if (bitcast<i32>(_e4532.member) != 0i) {
                                             let _e4536 = local_429;
@@ -6323,16 +6323,16 @@ fn function_() {
                                                 let _e4595 = global_2.member.member_4.member;
                                                 let _e4600 = global_2.member.member_4.member_2;
                                                 let _e4606 = global_2.member.member_4.member_3;
-                                                phi_4157_ = (0.5f * ((((2f * _e4590) * _e4595) / (_e4600 - _e4595)) * _e4606));
+                                                phi_4187_ = (0.5f * ((((2f * _e4590) * _e4595) / (_e4600 - _e4595)) * _e4606));
                                             } else {
                                                 let _e4548 = local_433;
                                                 if (_e4548 == 0u) {
-                                                    phi_4126_ = false;
+                                                    phi_4156_ = false;
                                                 } else {
                                                     let _e4550 = local_433;
-                                                    phi_4126_ = (_e4550 <= 2139095040u);
+                                                    phi_4156_ = (_e4550 <= 2139095040u);
                                                 }
-                                                let _e4553 = phi_4126_;
+                                                let _e4553 = phi_4156_;
                                                 if _e4553 {
                                                     let _e4557 = global_2.member.member_4.member_1;
                                                     let _e4562 = global_2.member.member_4.member;
@@ -6342,22 +6342,22 @@ fn function_() {
                                                     let _e4574 = ((((2f * _e4557) * _e4562) / (_e4567 - _e4562)) * _e4573);
                                                     local_435 = _e4574;
                                                     if (_e4574 == 0f) {
-                                                        phi_4154_ = 0f;
+                                                        phi_4184_ = 0f;
                                                     } else {
                                                         let _e4576 = local_434;
                                                         let _e4577 = local_431;
                                                         let _e4580 = local_435;
-                                                        phi_4154_ = (_e4580 * (1f - (_e4576 / _e4577)));
+                                                        phi_4184_ = (_e4580 * (1f - (_e4576 / _e4577)));
                                                     }
-                                                    let _e4583 = phi_4154_;
-                                                    phi_4155_ = _e4583;
+                                                    let _e4583 = phi_4184_;
+                                                    phi_4185_ = _e4583;
                                                 } else {
-                                                    phi_4155_ = _e729;
+                                                    phi_4185_ = _e729;
                                                 }
-                                                let _e4585 = phi_4155_;
-                                                phi_4157_ = (0.5f * _e4585);
+                                                let _e4585 = phi_4185_;
+                                                phi_4187_ = (0.5f * _e4585);
                                             }
-                                            let _e4610 = phi_4157_;
+                                            let _e4610 = phi_4187_;
                                             let _e4611 = local_432;
                                             let _e4613 = local_432;
                                             let _e4614 = select(_e4613, _e4610, (_e4610 < _e4611));
@@ -6367,11 +6367,11 @@ fn function_() {
                                             local_616 = _e4618;
                                             if (_e4618 < 0f) {
                                                 let _e4620 = local_616;
-                                                phi_4174_ = -(_e4620);
+                                                phi_4204_ = -(_e4620);
                                             } else {
-                                                phi_4174_ = _e4618;
+                                                phi_4204_ = _e4618;
                                             }
-                                            let _e4623 = phi_4174_;
+                                            let _e4623 = phi_4204_;
                                             let _e4625 = ((_e4623 - 0.25f) * 4f);
                                             let _e4627 = select(0f, _e4625, (_e4625 > 0f));
                                             local_617 = select(1f, _e4627, (_e4627 < 1f));
@@ -6389,16 +6389,16 @@ fn function_() {
                                             local_437 = (((0.2126f * select(0f, _e4633, (_e4633 > 0f))) + (0.7152f * select(0f, _e4639, (_e4639 > 0f)))) + (0.0722f * select(0f, _e4645, (_e4645 > 0f))));
                                             let _e4658 = local_410;
                                             if (_e4652 >= (8f * _e4658)) {
-                                                phi_4241_ = 1f;
+                                                phi_4271_ = 1f;
                                             } else {
                                                 let _e4661 = local_410;
                                                 let _e4662 = (4f * _e4661);
                                                 let _e4663 = local_436;
                                                 let _e4665 = ((_e4663 - _e4662) / _e4662);
                                                 let _e4667 = select(0f, _e4665, (_e4665 > 0f));
-                                                phi_4241_ = select(1f, _e4667, (_e4667 < 1f));
+                                                phi_4271_ = select(1f, _e4667, (_e4667 < 1f));
                                             }
-                                            let _e4671 = phi_4241_;
+                                            let _e4671 = phi_4271_;
                                             let _e4672 = local_437;
                                             let _e4674 = ((_e4672 - 0.25f) * 4f);
                                             let _e4676 = select(0f, _e4674, (_e4674 > 0f));
@@ -6408,7 +6408,7 @@ fn function_() {
                                             let _e4681 = local_412;
                                             if _e4681 {
                                             } else {
-                                                phi_6402_ = true;
+                                                phi_6432_ = true;
                                                 break;
                                             }
                                             let _e4682 = local_411;
@@ -6419,32 +6419,32 @@ fn function_() {
                                     }
                                 }
                                 let _e4687 = local_411;
-                                phi_3889_ = (_e4687 + 1u);
+                                phi_3919_ = (_e4687 + 1u);
                             } else {
-                                phi_3889_ = u32();
+                                phi_3919_ = u32();
                             }
-                            let _e4690 = phi_3889_;
+                            let _e4690 = phi_3919_;
                             continue;
                             continuing {
                                 let _e4691 = local_412;
-                                phi_3888_ = _e4690;
-                                phi_6402_ = _e4354;
+                                phi_3918_ = _e4690;
+                                phi_6432_ = _e4354;
                                 break if !(_e4691);
                             }
                         }
-                        let _e4694 = phi_6402_;
+                        let _e4694 = phi_6432_;
                         if _e4694 {
                             break;
                         }
-                        phi_6625_ = _e4694;
-                        phi_6545_ = _e4362;
-                        phi_6497_ = _e4365;
-                        phi_6449_ = _e4368;
+                        phi_6640_ = _e4694;
+                        phi_6575_ = _e4362;
+                        phi_6527_ = _e4365;
+                        phi_6479_ = _e4368;
                     }
-                    let _e4696 = phi_6625_;
-                    let _e4698 = phi_6545_;
-                    let _e4700 = phi_6497_;
-                    let _e4702 = phi_6449_;
+                    let _e4696 = phi_6640_;
+                    let _e4698 = phi_6575_;
+                    let _e4700 = phi_6527_;
+                    let _e4702 = phi_6479_;
                     local_602 = _e4698;
                     local_601 = _e4700;
                     local_600 = _e4702;
@@ -6453,31 +6453,31 @@ fn function_() {
                     let _e4713 = global_2.member.member_3;
                     local_439 = f32(_e4713);
                     local_641 = array<f32, 4>(0f, 0f, 0f, 0f);
-                    phi_6624_ = _e4696;
-                    phi_4280_ = 0u;
-                    phi_4283_ = array<f32, 4>(0f, 0f, 0f, 0f);
-                    phi_4285_ = array<f32, 3>(0f, 0f, 0f);
-                    phi_4287_ = 0f;
-                    phi_4289_ = array<f32, 4>(0f, 0f, 0f, 0f);
-                    phi_4291_ = 0f;
-                    phi_4293_ = 0f;
-                    phi_4295_ = array<f32, 3>(0f, 0f, 0f);
-                    phi_4297_ = array<f32, 2>(0f, 0f);
-                    phi_4299_ = 0u;
-                    phi_4301_ = 0f;
+                    phi_6639_ = _e4696;
+                    phi_4310_ = 0u;
+                    phi_4313_ = array<f32, 4>(0f, 0f, 0f, 0f);
+                    phi_4315_ = array<f32, 3>(0f, 0f, 0f);
+                    phi_4317_ = 0f;
+                    phi_4319_ = array<f32, 4>(0f, 0f, 0f, 0f);
+                    phi_4321_ = 0f;
+                    phi_4323_ = 0f;
+                    phi_4325_ = array<f32, 3>(0f, 0f, 0f);
+                    phi_4327_ = array<f32, 2>(0f, 0f);
+                    phi_4329_ = 0u;
+                    phi_4331_ = 0f;
                     loop {
-                        let _e4716 = phi_6624_;
-                        let _e4718 = phi_4280_;
-                        let _e4720 = phi_4283_;
-                        let _e4722 = phi_4285_;
-                        let _e4724 = phi_4287_;
-                        let _e4726 = phi_4289_;
-                        let _e4728 = phi_4291_;
-                        let _e4730 = phi_4293_;
-                        let _e4732 = phi_4295_;
-                        let _e4734 = phi_4297_;
-                        let _e4736 = phi_4299_;
-                        let _e4738 = phi_4301_;
+                        let _e4716 = phi_6639_;
+                        let _e4718 = phi_4310_;
+                        let _e4720 = phi_4313_;
+                        let _e4722 = phi_4315_;
+                        let _e4724 = phi_4317_;
+                        let _e4726 = phi_4319_;
+                        let _e4728 = phi_4321_;
+                        let _e4730 = phi_4323_;
+                        let _e4732 = phi_4325_;
+                        let _e4734 = phi_4327_;
+                        let _e4736 = phi_4329_;
+                        let _e4738 = phi_4331_;
                         local_440 = _e4718;
                         local_441 = _e4720;
                         local_442 = _e4722;
@@ -6515,7 +6515,7 @@ fn function_() {
                                     let _e4762 = local_5;
                                     if (_e4761 < _e4762) {
                                     } else {
-                                        phi_6629_ = true;
+                                        phi_6659_ = true;
                                         break;
                                     }
                                     let _e4764 = local_455;
@@ -6527,7 +6527,7 @@ fn function_() {
                                     let _e4771 = local_5;
                                     if (_e4770 < _e4771) {
                                     } else {
-                                        phi_6629_ = true;
+                                        phi_6659_ = true;
                                         break;
                                     }
                                     let _e4773 = local_457;
@@ -6539,7 +6539,7 @@ fn function_() {
                                     let _e4780 = local_5;
                                     if (_e4779 < _e4780) {
                                     } else {
-                                        phi_6629_ = true;
+                                        phi_6659_ = true;
                                         break;
                                     }
                                     let _e4782 = local_459;
@@ -6548,74 +6548,74 @@ fn function_() {
                                     let _e4787 = local_456;
                                     if (_e4787 > 1267650600000000000000000000000f) {
                                         let _e4789 = local_456;
-                                        phi_4369_ = select(true, false, (_e4789 <= 340282350000000000000000000000000000000f));
+                                        phi_4399_ = select(true, false, (_e4789 <= 340282350000000000000000000000000000000f));
                                     } else {
-                                        phi_4369_ = true;
+                                        phi_4399_ = true;
                                     }
-                                    let _e4793 = phi_4369_;
+                                    let _e4793 = phi_4399_;
                                     if _e4793 {
                                         let _e4794 = local_456;
                                         if (_e4794 < 0.000000000000000000000000000000000000011754944f) {
                                             let _e4796 = local_456;
-                                            phi_4383_ = select(true, false, (_e4796 >= -340282350000000000000000000000000000000f));
+                                            phi_4413_ = select(true, false, (_e4796 >= -340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_4383_ = true;
+                                            phi_4413_ = true;
                                         }
-                                        let _e4800 = phi_4383_;
+                                        let _e4800 = phi_4413_;
                                         let _e4801 = local_456;
-                                        phi_4388_ = select(0f, _e4801, _e4800);
+                                        phi_4418_ = select(0f, _e4801, _e4800);
                                     } else {
-                                        phi_4388_ = 1267650600000000000000000000000f;
+                                        phi_4418_ = 1267650600000000000000000000000f;
                                     }
-                                    let _e4804 = phi_4388_;
+                                    let _e4804 = phi_4418_;
                                     local_461 = _e4804;
                                     let _e4805 = local_458;
                                     if (_e4805 > 1267650600000000000000000000000f) {
                                         let _e4807 = local_458;
-                                        phi_4398_ = select(true, false, (_e4807 <= 340282350000000000000000000000000000000f));
+                                        phi_4428_ = select(true, false, (_e4807 <= 340282350000000000000000000000000000000f));
                                     } else {
-                                        phi_4398_ = true;
+                                        phi_4428_ = true;
                                     }
-                                    let _e4811 = phi_4398_;
+                                    let _e4811 = phi_4428_;
                                     if _e4811 {
                                         let _e4812 = local_458;
                                         if (_e4812 < 0.000000000000000000000000000000000000011754944f) {
                                             let _e4814 = local_458;
-                                            phi_4412_ = select(true, false, (_e4814 >= -340282350000000000000000000000000000000f));
+                                            phi_4442_ = select(true, false, (_e4814 >= -340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_4412_ = true;
+                                            phi_4442_ = true;
                                         }
-                                        let _e4818 = phi_4412_;
+                                        let _e4818 = phi_4442_;
                                         let _e4819 = local_458;
-                                        phi_4417_ = select(0f, _e4819, _e4818);
+                                        phi_4447_ = select(0f, _e4819, _e4818);
                                     } else {
-                                        phi_4417_ = 1267650600000000000000000000000f;
+                                        phi_4447_ = 1267650600000000000000000000000f;
                                     }
-                                    let _e4822 = phi_4417_;
+                                    let _e4822 = phi_4447_;
                                     local_462 = _e4822;
                                     let _e4823 = local_460;
                                     if (_e4823 > 1267650600000000000000000000000f) {
                                         let _e4825 = local_460;
-                                        phi_4427_ = select(true, false, (_e4825 <= 340282350000000000000000000000000000000f));
+                                        phi_4457_ = select(true, false, (_e4825 <= 340282350000000000000000000000000000000f));
                                     } else {
-                                        phi_4427_ = true;
+                                        phi_4457_ = true;
                                     }
-                                    let _e4829 = phi_4427_;
+                                    let _e4829 = phi_4457_;
                                     if _e4829 {
                                         let _e4830 = local_460;
                                         if (_e4830 < 0.000000000000000000000000000000000000011754944f) {
                                             let _e4832 = local_460;
-                                            phi_4441_ = select(true, false, (_e4832 >= -340282350000000000000000000000000000000f));
+                                            phi_4471_ = select(true, false, (_e4832 >= -340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_4441_ = true;
+                                            phi_4471_ = true;
                                         }
-                                        let _e4836 = phi_4441_;
+                                        let _e4836 = phi_4471_;
                                         let _e4837 = local_460;
-                                        phi_4446_ = select(0f, _e4837, _e4836);
+                                        phi_4476_ = select(0f, _e4837, _e4836);
                                     } else {
-                                        phi_4446_ = 1267650600000000000000000000000f;
+                                        phi_4476_ = 1267650600000000000000000000000f;
                                     }
-                                    let _e4840 = phi_4446_;
+                                    let _e4840 = phi_4476_;
                                     local_463 = _e4840;
                                     let _e4841 = local_461;
                                     let _e4842 = local_462;
@@ -6624,7 +6624,7 @@ fn function_() {
                                     let _e4845 = local_6;
                                     if (_e4844 < _e4845) {
                                     } else {
-                                        phi_6629_ = true;
+                                        phi_6659_ = true;
                                         break;
                                     }
                                     let _e4847 = local_454;
@@ -6640,52 +6640,52 @@ fn function_() {
                                                 let _e4865 = bitcast<u32>(_e4864);
                                                 local_466 = _e4865;
                                                 if (_e4865 == 0u) {
-                                                    phi_4480_ = false;
+                                                    phi_4510_ = false;
                                                 } else {
                                                     let _e4867 = local_466;
-                                                    phi_4480_ = (_e4867 <= 2139095040u);
+                                                    phi_4510_ = (_e4867 <= 2139095040u);
                                                 }
-                                                let _e4870 = phi_4480_;
+                                                let _e4870 = phi_4510_;
                                                 local_467 = _e4870;
                                                 if _e4870 {
                                                     let _e4871 = local_464;
                                                     let _e4872 = local_465;
-                                                    phi_4486_ = type_23(1u, type_22(_e4871, _e4872));
+                                                    phi_4516_ = type_23(1u, type_22(_e4871, _e4872));
                                                 } else {
-                                                    phi_4486_ = type_23();
+                                                    phi_4516_ = type_23();
                                                 }
-                                                let _e4876 = phi_4486_;
+                                                let _e4876 = phi_4516_;
                                                 let _e4877 = local_467;
-                                                phi_4488_ = _e4876;
-                                                phi_4489_ = select(true, false, _e4877);
+                                                phi_4518_ = _e4876;
+                                                phi_4519_ = select(true, false, _e4877);
                                             } else {
-                                                phi_4488_ = type_23();
-                                                phi_4489_ = true;
+                                                phi_4518_ = type_23();
+                                                phi_4519_ = true;
                                             }
-                                            let _e4880 = phi_4488_;
-                                            let _e4882 = phi_4489_;
-                                            phi_4490_ = _e4880;
-                                            phi_4491_ = _e4882;
+                                            let _e4880 = phi_4518_;
+                                            let _e4882 = phi_4519_;
+                                            phi_4520_ = _e4880;
+                                            phi_4521_ = _e4882;
                                         } else {
-                                            phi_4490_ = type_23();
-                                            phi_4491_ = true;
+                                            phi_4520_ = type_23();
+                                            phi_4521_ = true;
                                         }
-                                        let _e4884 = phi_4490_;
-                                        let _e4886 = phi_4491_;
-                                        phi_4492_ = _e4884;
-                                        phi_4493_ = _e4886;
+                                        let _e4884 = phi_4520_;
+                                        let _e4886 = phi_4521_;
+                                        phi_4522_ = _e4884;
+                                        phi_4523_ = _e4886;
                                     } else {
-                                        phi_4492_ = type_23();
-                                        phi_4493_ = true;
+                                        phi_4522_ = type_23();
+                                        phi_4523_ = true;
                                     }
-                                    let _e4888 = phi_4492_;
-                                    let _e4890 = phi_4493_;
+                                    let _e4888 = phi_4522_;
+                                    let _e4890 = phi_4523_;
                                     if _e4890 {
-                                        phi_4498_ = type_23(0u, type_23().member_1);
+                                        phi_4528_ = type_23(0u, type_23().member_1);
                                     } else {
-                                        phi_4498_ = _e4888;
+                                        phi_4528_ = _e4888;
                                     }
-                                    let _e4895 = phi_4498_;
+                                    let _e4895 = phi_4528_;
                                     local_468 = _e4895;
                                     if (bitcast<i32>(_e4895.member) != 0i) {
                                         let _e4899 = local_468;
@@ -6699,16 +6699,16 @@ fn function_() {
                                             let _e4954 = global_2.member.member_4.member;
                                             let _e4959 = global_2.member.member_4.member_2;
                                             let _e4965 = global_2.member.member_4.member_3;
-                                            phi_4566_ = (0.5f * ((((2f * _e4949) * _e4954) / (_e4959 - _e4954)) * _e4965));
+                                            phi_4596_ = (0.5f * ((((2f * _e4949) * _e4954) / (_e4959 - _e4954)) * _e4965));
                                         } else {
                                             let _e4907 = local_471;
                                             if (_e4907 == 0u) {
-                                                phi_4535_ = false;
+                                                phi_4565_ = false;
                                             } else {
                                                 let _e4909 = local_471;
-                                                phi_4535_ = (_e4909 <= 2139095040u);
+                                                phi_4565_ = (_e4909 <= 2139095040u);
                                             }
-                                            let _e4912 = phi_4535_;
+                                            let _e4912 = phi_4565_;
                                             if _e4912 {
                                                 let _e4916 = global_2.member.member_4.member_1;
                                                 let _e4921 = global_2.member.member_4.member;
@@ -6718,22 +6718,22 @@ fn function_() {
                                                 let _e4933 = ((((2f * _e4916) * _e4921) / (_e4926 - _e4921)) * _e4932);
                                                 local_473 = _e4933;
                                                 if (_e4933 == 0f) {
-                                                    phi_4563_ = 0f;
+                                                    phi_4593_ = 0f;
                                                 } else {
                                                     let _e4935 = local_472;
                                                     let _e4936 = local_470;
                                                     let _e4939 = local_473;
-                                                    phi_4563_ = (_e4939 * (1f - (_e4935 / _e4936)));
+                                                    phi_4593_ = (_e4939 * (1f - (_e4935 / _e4936)));
                                                 }
-                                                let _e4942 = phi_4563_;
-                                                phi_4564_ = _e4942;
+                                                let _e4942 = phi_4593_;
+                                                phi_4594_ = _e4942;
                                             } else {
-                                                phi_4564_ = _e729;
+                                                phi_4594_ = _e729;
                                             }
-                                            let _e4944 = phi_4564_;
-                                            phi_4566_ = (0.5f * _e4944);
+                                            let _e4944 = phi_4594_;
+                                            phi_4596_ = (0.5f * _e4944);
                                         }
-                                        let _e4969 = phi_4566_;
+                                        let _e4969 = phi_4596_;
                                         let _e4970 = local_439;
                                         let _e4972 = local_439;
                                         let _e4973 = select(_e4972, _e4969, (_e4969 < _e4970));
@@ -6753,7 +6753,7 @@ fn function_() {
                                         let _e4990 = local_451;
                                         if _e4990 {
                                         } else {
-                                            phi_6629_ = true;
+                                            phi_6659_ = true;
                                             break;
                                         }
                                         let _e4991 = local_440;
@@ -6761,15 +6761,15 @@ fn function_() {
                                         local_474 = _e4993;
                                         if (_e4993 <= 0f) {
                                             let _e5054 = local_638;
-                                            phi_6639_ = _e4716;
-                                            phi_4684_ = type_25(array<f32, 3>(_e5054[0], _e5054[1], _e5054[2]), array<f32, 3>(0f, 0f, 0f));
+                                            phi_6669_ = _e4716;
+                                            phi_4714_ = type_25(array<f32, 3>(_e5054[0], _e5054[1], _e5054[2]), array<f32, 3>(0f, 0f, 0f));
                                         } else {
                                             let _e4995 = local_638;
                                             local_639 = _e4995;
                                             local_640 = array<f32, 3>(0f, 0f, 0f);
-                                            phi_4612_ = 0u;
+                                            phi_4642_ = 0u;
                                             loop {
-                                                let _e4997 = phi_4612_;
+                                                let _e4997 = phi_4642_;
                                                 local_475 = _e4997;
                                                 let _e4998 = local_475;
                                                 let _e4999 = (_e4998 < 3u);
@@ -6778,7 +6778,7 @@ fn function_() {
                                                     let _e5000 = local_476;
                                                     if _e5000 {
                                                     } else {
-                                                        phi_6593_ = true;
+                                                        phi_6623_ = true;
                                                         break;
                                                     }
                                                     let _e5001 = local_475;
@@ -6787,7 +6787,7 @@ fn function_() {
                                                     let _e5004 = local_476;
                                                     if _e5004 {
                                                     } else {
-                                                        phi_6593_ = true;
+                                                        phi_6623_ = true;
                                                         break;
                                                     }
                                                     let _e5005 = local_475;
@@ -6797,7 +6797,7 @@ fn function_() {
                                                         let _e5010 = local_476;
                                                         if _e5010 {
                                                         } else {
-                                                            phi_6593_ = true;
+                                                            phi_6623_ = true;
                                                             break;
                                                         }
                                                         let _e5011 = local_638[_e5005];
@@ -6806,7 +6806,7 @@ fn function_() {
                                                         let _e5014 = local_476;
                                                         if _e5014 {
                                                         } else {
-                                                            phi_6593_ = true;
+                                                            phi_6623_ = true;
                                                             break;
                                                         }
                                                         let _e5015 = local_475;
@@ -6818,7 +6818,7 @@ fn function_() {
                                                         let _e5022 = local_476;
                                                         if _e5022 {
                                                         } else {
-                                                            phi_6593_ = true;
+                                                            phi_6623_ = true;
                                                             break;
                                                         }
                                                         let _e5023 = local_638[_e5005];
@@ -6830,7 +6830,7 @@ fn function_() {
                                                         let _e5029 = local_476;
                                                         if _e5029 {
                                                         } else {
-                                                            phi_6593_ = true;
+                                                            phi_6623_ = true;
                                                             break;
                                                         }
                                                         let _e5030 = local_475;
@@ -6839,31 +6839,31 @@ fn function_() {
                                                         local_639[_e5030] = (_e5032 + _e5033);
                                                     }
                                                     let _e5035 = local_475;
-                                                    phi_4613_ = (_e5035 + 1u);
+                                                    phi_4643_ = (_e5035 + 1u);
                                                 } else {
-                                                    phi_4613_ = u32();
+                                                    phi_4643_ = u32();
                                                 }
-                                                let _e5038 = phi_4613_;
+                                                let _e5038 = phi_4643_;
                                                 continue;
                                                 continuing {
                                                     let _e5039 = local_476;
-                                                    phi_4612_ = _e5038;
-                                                    phi_6593_ = _e4716;
+                                                    phi_4642_ = _e5038;
+                                                    phi_6623_ = _e4716;
                                                     break if !(_e5039);
                                                 }
                                             }
-                                            let _e5042 = phi_6593_;
-                                            phi_6629_ = _e5042;
+                                            let _e5042 = phi_6623_;
+                                            phi_6659_ = _e5042;
                                             if _e5042 {
                                                 break;
                                             }
                                             let _e5043 = local_639;
                                             let _e5048 = local_640;
-                                            phi_6639_ = _e5042;
-                                            phi_4684_ = type_25(array<f32, 3>(_e5043[0], _e5043[1], _e5043[2]), array<f32, 3>(_e5048[0], _e5048[1], _e5048[2]));
+                                            phi_6669_ = _e5042;
+                                            phi_4714_ = type_25(array<f32, 3>(_e5043[0], _e5043[1], _e5043[2]), array<f32, 3>(_e5048[0], _e5048[1], _e5048[2]));
                                         }
-                                        let _e5061 = phi_6639_;
-                                        let _e5063 = phi_4684_;
+                                        let _e5061 = phi_6669_;
+                                        let _e5063 = phi_4714_;
                                         local_482 = _e5063.member;
                                         let _e5066 = local_442;
                                         let _e5070 = local_442;
@@ -6872,7 +6872,7 @@ fn function_() {
                                         let _e5084 = local_451;
                                         if _e5084 {
                                         } else {
-                                            phi_6629_ = true;
+                                            phi_6659_ = true;
                                             break;
                                         }
                                         let _e5085 = local_440;
@@ -6921,170 +6921,170 @@ fn function_() {
                                         let _e5187 = local_444;
                                         let _e5189 = local_619;
                                         let _e5193 = local_443;
-                                        phi_6633_ = _e5061;
-                                        phi_4804_ = array<f32, 4>((_e5088[0] + (_e5093 * (_e5091 + 0.5f))), (_e5096[1] + (_e5101 * (_e5099 + 0.5f))), (_e5104[2] + (_e5106 * _e5107)), (_e5110[3] + _e5112));
-                                        phi_4805_ = array<f32, 3>((_e5066[0] + _e5063.member_1[0]), (_e5070[1] + _e5063.member_1[1]), (_e5074[2] + _e5063.member_1[2]));
-                                        phi_4806_ = (_e5193 + _e5174);
-                                        phi_4807_ = array<f32, 4>((_e5175[0] + (_e5174 * _e5140[0])), (_e5179[1] + (_e5174 * _e5146[1])), (_e5183[2] + (_e5174 * _e5152[2])), (_e5187[3] + (_e5174 * _e5189)));
-                                        phi_4808_ = (_e5161 + _e5137);
-                                        phi_4809_ = (_e5159 + (_e5137 * _e5157));
-                                        phi_4810_ = array<f32, 3>((_e5138[0] + (_e5137 * _e5140[0])), (_e5144[1] + (_e5137 * _e5146[1])), (_e5150[2] + (_e5137 * _e5152[2])));
-                                        phi_4811_ = array<f32, 2>(((_e5118[0] + _e5091) + 0.5f), ((_e5122[1] + _e5099) + 0.5f));
-                                        phi_4812_ = (_e5127 + 1u);
-                                        phi_4813_ = (_e5115 + _e5116);
+                                        phi_6663_ = _e5061;
+                                        phi_4834_ = array<f32, 4>((_e5088[0] + (_e5093 * (_e5091 + 0.5f))), (_e5096[1] + (_e5101 * (_e5099 + 0.5f))), (_e5104[2] + (_e5106 * _e5107)), (_e5110[3] + _e5112));
+                                        phi_4835_ = array<f32, 3>((_e5066[0] + _e5063.member_1[0]), (_e5070[1] + _e5063.member_1[1]), (_e5074[2] + _e5063.member_1[2]));
+                                        phi_4836_ = (_e5193 + _e5174);
+                                        phi_4837_ = array<f32, 4>((_e5175[0] + (_e5174 * _e5140[0])), (_e5179[1] + (_e5174 * _e5146[1])), (_e5183[2] + (_e5174 * _e5152[2])), (_e5187[3] + (_e5174 * _e5189)));
+                                        phi_4838_ = (_e5161 + _e5137);
+                                        phi_4839_ = (_e5159 + (_e5137 * _e5157));
+                                        phi_4840_ = array<f32, 3>((_e5138[0] + (_e5137 * _e5140[0])), (_e5144[1] + (_e5137 * _e5146[1])), (_e5150[2] + (_e5137 * _e5152[2])));
+                                        phi_4841_ = array<f32, 2>(((_e5118[0] + _e5091) + 0.5f), ((_e5122[1] + _e5099) + 0.5f));
+                                        phi_4842_ = (_e5127 + 1u);
+                                        phi_4843_ = (_e5115 + _e5116);
                                     } else {
-                                        phi_6633_ = _e4716;
-                                        phi_4804_ = _e4720;
-                                        phi_4805_ = _e4722;
-                                        phi_4806_ = _e4724;
-                                        phi_4807_ = _e4726;
-                                        phi_4808_ = _e4728;
-                                        phi_4809_ = _e4730;
-                                        phi_4810_ = _e4732;
-                                        phi_4811_ = _e4734;
-                                        phi_4812_ = _e4736;
-                                        phi_4813_ = _e4738;
+                                        phi_6663_ = _e4716;
+                                        phi_4834_ = _e4720;
+                                        phi_4835_ = _e4722;
+                                        phi_4836_ = _e4724;
+                                        phi_4837_ = _e4726;
+                                        phi_4838_ = _e4728;
+                                        phi_4839_ = _e4730;
+                                        phi_4840_ = _e4732;
+                                        phi_4841_ = _e4734;
+                                        phi_4842_ = _e4736;
+                                        phi_4843_ = _e4738;
                                     }
-                                    let _e5196 = phi_6633_;
-                                    let _e5198 = phi_4804_;
-                                    let _e5200 = phi_4805_;
-                                    let _e5202 = phi_4806_;
-                                    let _e5204 = phi_4807_;
-                                    let _e5206 = phi_4808_;
-                                    let _e5208 = phi_4809_;
-                                    let _e5210 = phi_4810_;
-                                    let _e5212 = phi_4811_;
-                                    let _e5214 = phi_4812_;
-                                    let _e5216 = phi_4813_;
-                                    phi_6632_ = _e5196;
-                                    phi_4814_ = _e5198;
-                                    phi_4815_ = _e5200;
-                                    phi_4816_ = _e5202;
-                                    phi_4817_ = _e5204;
-                                    phi_4818_ = _e5206;
-                                    phi_4819_ = _e5208;
-                                    phi_4820_ = _e5210;
-                                    phi_4821_ = _e5212;
-                                    phi_4822_ = _e5214;
-                                    phi_4823_ = _e5216;
+                                    let _e5196 = phi_6663_;
+                                    let _e5198 = phi_4834_;
+                                    let _e5200 = phi_4835_;
+                                    let _e5202 = phi_4836_;
+                                    let _e5204 = phi_4837_;
+                                    let _e5206 = phi_4838_;
+                                    let _e5208 = phi_4839_;
+                                    let _e5210 = phi_4840_;
+                                    let _e5212 = phi_4841_;
+                                    let _e5214 = phi_4842_;
+                                    let _e5216 = phi_4843_;
+                                    phi_6662_ = _e5196;
+                                    phi_4844_ = _e5198;
+                                    phi_4845_ = _e5200;
+                                    phi_4846_ = _e5202;
+                                    phi_4847_ = _e5204;
+                                    phi_4848_ = _e5206;
+                                    phi_4849_ = _e5208;
+                                    phi_4850_ = _e5210;
+                                    phi_4851_ = _e5212;
+                                    phi_4852_ = _e5214;
+                                    phi_4853_ = _e5216;
                                 } else {
-                                    phi_6632_ = _e4716;
-                                    phi_4814_ = _e4720;
-                                    phi_4815_ = _e4722;
-                                    phi_4816_ = _e4724;
-                                    phi_4817_ = _e4726;
-                                    phi_4818_ = _e4728;
-                                    phi_4819_ = _e4730;
-                                    phi_4820_ = _e4732;
-                                    phi_4821_ = _e4734;
-                                    phi_4822_ = _e4736;
-                                    phi_4823_ = _e4738;
+                                    phi_6662_ = _e4716;
+                                    phi_4844_ = _e4720;
+                                    phi_4845_ = _e4722;
+                                    phi_4846_ = _e4724;
+                                    phi_4847_ = _e4726;
+                                    phi_4848_ = _e4728;
+                                    phi_4849_ = _e4730;
+                                    phi_4850_ = _e4732;
+                                    phi_4851_ = _e4734;
+                                    phi_4852_ = _e4736;
+                                    phi_4853_ = _e4738;
                                 }
-                                let _e5218 = phi_6632_;
-                                let _e5220 = phi_4814_;
-                                let _e5222 = phi_4815_;
-                                let _e5224 = phi_4816_;
-                                let _e5226 = phi_4817_;
-                                let _e5228 = phi_4818_;
-                                let _e5230 = phi_4819_;
-                                let _e5232 = phi_4820_;
-                                let _e5234 = phi_4821_;
-                                let _e5236 = phi_4822_;
-                                let _e5238 = phi_4823_;
-                                phi_6631_ = _e5218;
-                                phi_4824_ = _e5220;
-                                phi_4825_ = _e5222;
-                                phi_4826_ = _e5224;
-                                phi_4827_ = _e5226;
-                                phi_4828_ = _e5228;
-                                phi_4829_ = _e5230;
-                                phi_4830_ = _e5232;
-                                phi_4831_ = _e5234;
-                                phi_4832_ = _e5236;
-                                phi_4833_ = _e5238;
+                                let _e5218 = phi_6662_;
+                                let _e5220 = phi_4844_;
+                                let _e5222 = phi_4845_;
+                                let _e5224 = phi_4846_;
+                                let _e5226 = phi_4847_;
+                                let _e5228 = phi_4848_;
+                                let _e5230 = phi_4849_;
+                                let _e5232 = phi_4850_;
+                                let _e5234 = phi_4851_;
+                                let _e5236 = phi_4852_;
+                                let _e5238 = phi_4853_;
+                                phi_6661_ = _e5218;
+                                phi_4854_ = _e5220;
+                                phi_4855_ = _e5222;
+                                phi_4856_ = _e5224;
+                                phi_4857_ = _e5226;
+                                phi_4858_ = _e5228;
+                                phi_4859_ = _e5230;
+                                phi_4860_ = _e5232;
+                                phi_4861_ = _e5234;
+                                phi_4862_ = _e5236;
+                                phi_4863_ = _e5238;
                             } else {
-                                phi_6631_ = _e4716;
-                                phi_4824_ = _e4720;
-                                phi_4825_ = _e4722;
-                                phi_4826_ = _e4724;
-                                phi_4827_ = _e4726;
-                                phi_4828_ = _e4728;
-                                phi_4829_ = _e4730;
-                                phi_4830_ = _e4732;
-                                phi_4831_ = _e4734;
-                                phi_4832_ = _e4736;
-                                phi_4833_ = _e4738;
+                                phi_6661_ = _e4716;
+                                phi_4854_ = _e4720;
+                                phi_4855_ = _e4722;
+                                phi_4856_ = _e4724;
+                                phi_4857_ = _e4726;
+                                phi_4858_ = _e4728;
+                                phi_4859_ = _e4730;
+                                phi_4860_ = _e4732;
+                                phi_4861_ = _e4734;
+                                phi_4862_ = _e4736;
+                                phi_4863_ = _e4738;
                             }
-                            let _e5240 = phi_6631_;
-                            let _e5242 = phi_4824_;
-                            let _e5244 = phi_4825_;
-                            let _e5246 = phi_4826_;
-                            let _e5248 = phi_4827_;
-                            let _e5250 = phi_4828_;
-                            let _e5252 = phi_4829_;
-                            let _e5254 = phi_4830_;
-                            let _e5256 = phi_4831_;
-                            let _e5258 = phi_4832_;
-                            let _e5260 = phi_4833_;
+                            let _e5240 = phi_6661_;
+                            let _e5242 = phi_4854_;
+                            let _e5244 = phi_4855_;
+                            let _e5246 = phi_4856_;
+                            let _e5248 = phi_4857_;
+                            let _e5250 = phi_4858_;
+                            let _e5252 = phi_4859_;
+                            let _e5254 = phi_4860_;
+                            let _e5256 = phi_4861_;
+                            let _e5258 = phi_4862_;
+                            let _e5260 = phi_4863_;
                             let _e5261 = local_440;
-                            phi_6630_ = _e5240;
-                            phi_4281_ = (_e5261 + 1u);
-                            phi_4284_ = _e5242;
-                            phi_4286_ = _e5244;
-                            phi_4288_ = _e5246;
-                            phi_4290_ = _e5248;
-                            phi_4292_ = _e5250;
-                            phi_4294_ = _e5252;
-                            phi_4296_ = _e5254;
-                            phi_4298_ = _e5256;
-                            phi_4300_ = _e5258;
-                            phi_4302_ = _e5260;
+                            phi_6660_ = _e5240;
+                            phi_4311_ = (_e5261 + 1u);
+                            phi_4314_ = _e5242;
+                            phi_4316_ = _e5244;
+                            phi_4318_ = _e5246;
+                            phi_4320_ = _e5248;
+                            phi_4322_ = _e5250;
+                            phi_4324_ = _e5252;
+                            phi_4326_ = _e5254;
+                            phi_4328_ = _e5256;
+                            phi_4330_ = _e5258;
+                            phi_4332_ = _e5260;
                         } else {
-                            phi_6630_ = _e4716;
-                            phi_4281_ = u32();
-                            phi_4284_ = array<f32, 4>();
-                            phi_4286_ = array<f32, 3>();
-                            phi_4288_ = f32();
-                            phi_4290_ = array<f32, 4>();
-                            phi_4292_ = f32();
-                            phi_4294_ = f32();
-                            phi_4296_ = array<f32, 3>();
-                            phi_4298_ = array<f32, 2>();
-                            phi_4300_ = u32();
-                            phi_4302_ = f32();
+                            phi_6660_ = _e4716;
+                            phi_4311_ = u32();
+                            phi_4314_ = array<f32, 4>();
+                            phi_4316_ = array<f32, 3>();
+                            phi_4318_ = f32();
+                            phi_4320_ = array<f32, 4>();
+                            phi_4322_ = f32();
+                            phi_4324_ = f32();
+                            phi_4326_ = array<f32, 3>();
+                            phi_4328_ = array<f32, 2>();
+                            phi_4330_ = u32();
+                            phi_4332_ = f32();
                         }
-                        let _e5264 = phi_6630_;
-                        let _e5266 = phi_4281_;
-                        let _e5268 = phi_4284_;
-                        let _e5270 = phi_4286_;
-                        let _e5272 = phi_4288_;
-                        let _e5274 = phi_4290_;
-                        let _e5276 = phi_4292_;
-                        let _e5278 = phi_4294_;
-                        let _e5280 = phi_4296_;
-                        let _e5282 = phi_4298_;
-                        let _e5284 = phi_4300_;
-                        let _e5286 = phi_4302_;
+                        let _e5264 = phi_6660_;
+                        let _e5266 = phi_4311_;
+                        let _e5268 = phi_4314_;
+                        let _e5270 = phi_4316_;
+                        let _e5272 = phi_4318_;
+                        let _e5274 = phi_4320_;
+                        let _e5276 = phi_4322_;
+                        let _e5278 = phi_4324_;
+                        let _e5280 = phi_4326_;
+                        let _e5282 = phi_4328_;
+                        let _e5284 = phi_4330_;
+                        let _e5286 = phi_4332_;
                         continue;
                         continuing {
                             let _e5287 = local_451;
-                            phi_6624_ = _e5264;
-                            phi_4280_ = _e5266;
-                            phi_4283_ = _e5268;
-                            phi_4285_ = _e5270;
-                            phi_4287_ = _e5272;
-                            phi_4289_ = _e5274;
-                            phi_4291_ = _e5276;
-                            phi_4293_ = _e5278;
-                            phi_4295_ = _e5280;
-                            phi_4297_ = _e5282;
-                            phi_4299_ = _e5284;
-                            phi_4301_ = _e5286;
-                            phi_6629_ = _e5264;
+                            phi_6639_ = _e5264;
+                            phi_4310_ = _e5266;
+                            phi_4313_ = _e5268;
+                            phi_4315_ = _e5270;
+                            phi_4317_ = _e5272;
+                            phi_4319_ = _e5274;
+                            phi_4321_ = _e5276;
+                            phi_4323_ = _e5278;
+                            phi_4325_ = _e5280;
+                            phi_4327_ = _e5282;
+                            phi_4329_ = _e5284;
+                            phi_4331_ = _e5286;
+                            phi_6659_ = _e5264;
                             break if !(_e5287);
                         }
                     }
-                    let _e5290 = phi_6629_;
+                    let _e5290 = phi_6659_;
                     if _e5290 {
                         break;
                     }
@@ -7092,8 +7092,8 @@ fn function_() {
                     if (_e5291 == 0u) {
                         let _e5465 = local_622;
                         let _e5466 = local_449;
-                        phi_6652_ = _e5290;
-                        phi_4972_ = type_30(array<f32, 2>(0f, 0f), array<f32, 3>(0f, 0f, 0f), 0f, 0f, array<f32, 3>(0f, 0f, 0f), _e5465, _e5466, array<f32, 3>(0f, 0f, 0f), 0f, 0f);
+                        phi_6682_ = _e5290;
+                        phi_5002_ = type_30(array<f32, 2>(0f, 0f), array<f32, 3>(0f, 0f, 0f), 0f, 0f, array<f32, 3>(0f, 0f, 0f), _e5465, _e5466, array<f32, 3>(0f, 0f, 0f), 0f, 0f);
                     } else {
                         let _e5293 = local_449;
                         let _e5294 = f32(_e5293);
@@ -7116,34 +7116,34 @@ fn function_() {
                                 let _e5309 = local_444;
                                 let _e5312 = local_444;
                                 let _e5316 = local_444;
-                                phi_4864_ = array<f32, 3>((_e5306[0] * _e5305), (_e5309[1] * _e5305), (_e5312[2] * _e5305));
-                                phi_4865_ = ((0.5f * _e5316[3]) * _e5305);
+                                phi_4894_ = array<f32, 3>((_e5306[0] * _e5305), (_e5309[1] * _e5305), (_e5312[2] * _e5305));
+                                phi_4895_ = ((0.5f * _e5316[3]) * _e5305);
                             } else {
-                                phi_4864_ = array<f32, 3>();
-                                phi_4865_ = f32();
+                                phi_4894_ = array<f32, 3>();
+                                phi_4895_ = f32();
                             }
-                            let _e5321 = phi_4864_;
-                            let _e5323 = phi_4865_;
+                            let _e5321 = phi_4894_;
+                            let _e5323 = phi_4895_;
                             let _e5324 = local_487;
-                            phi_4867_ = _e5321;
-                            phi_4868_ = _e5323;
-                            phi_4869_ = select(true, false, _e5324);
+                            phi_4897_ = _e5321;
+                            phi_4898_ = _e5323;
+                            phi_4899_ = select(true, false, _e5324);
                         } else {
-                            phi_4867_ = array<f32, 3>();
-                            phi_4868_ = f32();
-                            phi_4869_ = true;
+                            phi_4897_ = array<f32, 3>();
+                            phi_4898_ = f32();
+                            phi_4899_ = true;
                         }
-                        let _e5327 = phi_4867_;
-                        let _e5329 = phi_4868_;
-                        let _e5331 = phi_4869_;
+                        let _e5327 = phi_4897_;
+                        let _e5329 = phi_4898_;
+                        let _e5331 = phi_4899_;
                         local_488 = _e5329;
                         local_489 = _e5331;
                         if _e5331 {
-                            phi_4873_ = array<f32, 3>(0f, 0f, 0f);
+                            phi_4903_ = array<f32, 3>(0f, 0f, 0f);
                         } else {
-                            phi_4873_ = _e5327;
+                            phi_4903_ = _e5327;
                         }
-                        let _e5333 = phi_4873_;
+                        let _e5333 = phi_4903_;
                         local_490 = _e5333;
                         let _e5334 = local_489;
                         let _e5335 = local_485;
@@ -7157,25 +7157,25 @@ fn function_() {
                             let _e5345 = local_447;
                             let _e5348 = local_447;
                             let _e5352 = local_446;
-                            phi_4889_ = array<f32, 3>((_e5342[0] * _e5341), (_e5345[1] * _e5341), (_e5348[2] * _e5341));
-                            phi_4890_ = ((0.5f * _e5352) * _e5341);
+                            phi_4919_ = array<f32, 3>((_e5342[0] * _e5341), (_e5345[1] * _e5341), (_e5348[2] * _e5341));
+                            phi_4920_ = ((0.5f * _e5352) * _e5341);
                         } else {
-                            phi_4889_ = array<f32, 3>(0f, 0f, 0f);
-                            phi_4890_ = _e5298;
+                            phi_4919_ = array<f32, 3>(0f, 0f, 0f);
+                            phi_4920_ = _e5298;
                         }
-                        let _e5356 = phi_4889_;
-                        let _e5358 = phi_4890_;
+                        let _e5356 = phi_4919_;
+                        let _e5358 = phi_4920_;
                         local_491 = _e5356;
                         local_492 = _e5358;
                         let _e5359 = local_486;
                         if _e5359 {
                             let _e5360 = local_445;
                             let _e5361 = local_484;
-                            phi_4896_ = (_e5360 * _e5361);
+                            phi_4926_ = (_e5360 * _e5361);
                         } else {
-                            phi_4896_ = 1f;
+                            phi_4926_ = 1f;
                         }
-                        let _e5364 = phi_4896_;
+                        let _e5364 = phi_4926_;
                         local_493 = _e5364;
                         let _e5365 = local_448;
                         let _e5367 = local_484;
@@ -7193,11 +7193,11 @@ fn function_() {
                             let _e5384 = local_441;
                             let _e5386 = (_e5384[1] * _e5380);
                             local_497 = _e5386;
-                            phi_4915_ = 0u;
-                            phi_4918_ = 0f;
+                            phi_4945_ = 0u;
+                            phi_4948_ = 0f;
                             loop {
-                                let _e5389 = phi_4915_;
-                                let _e5391 = phi_4918_;
+                                let _e5389 = phi_4945_;
+                                let _e5391 = phi_4948_;
                                 local_498 = _e5389;
                                 local_499 = _e5391;
                                 let _e5392 = local_498;
@@ -7207,7 +7207,7 @@ fn function_() {
                                     let _e5394 = local_500;
                                     if _e5394 {
                                     } else {
-                                        phi_6640_ = true;
+                                        phi_6670_ = true;
                                         break;
                                     }
                                     let _e5395 = local_498;
@@ -7224,7 +7224,7 @@ fn function_() {
                                         let _e5417 = local_500;
                                         if _e5417 {
                                         } else {
-                                            phi_6640_ = true;
+                                            phi_6670_ = true;
                                             break;
                                         }
                                         let _e5418 = local_641[_e5395];
@@ -7233,30 +7233,30 @@ fn function_() {
                                         let _e5422 = local_502;
                                         let _e5423 = local_502;
                                         let _e5428 = local_499;
-                                        phi_4962_ = (_e5428 + (_e5418 * sqrt(((_e5419 * _e5420) + (_e5422 * _e5423)))));
+                                        phi_4992_ = (_e5428 + (_e5418 * sqrt(((_e5419 * _e5420) + (_e5422 * _e5423)))));
                                     } else {
-                                        phi_4962_ = _e5391;
+                                        phi_4992_ = _e5391;
                                     }
-                                    let _e5431 = phi_4962_;
+                                    let _e5431 = phi_4992_;
                                     let _e5432 = local_498;
-                                    phi_4916_ = (_e5432 + 1u);
-                                    phi_4919_ = _e5431;
+                                    phi_4946_ = (_e5432 + 1u);
+                                    phi_4949_ = _e5431;
                                 } else {
-                                    phi_4916_ = u32();
-                                    phi_4919_ = f32();
+                                    phi_4946_ = u32();
+                                    phi_4949_ = f32();
                                 }
-                                let _e5435 = phi_4916_;
-                                let _e5437 = phi_4919_;
+                                let _e5435 = phi_4946_;
+                                let _e5437 = phi_4949_;
                                 continue;
                                 continuing {
                                     let _e5438 = local_500;
-                                    phi_4915_ = _e5435;
-                                    phi_4918_ = _e5437;
-                                    phi_6640_ = _e5290;
+                                    phi_4945_ = _e5435;
+                                    phi_4948_ = _e5437;
+                                    phi_6670_ = _e5290;
                                     break if !(_e5438);
                                 }
                             }
-                            let _e5441 = phi_6640_;
+                            let _e5441 = phi_6670_;
                             if _e5441 {
                                 break;
                             }
@@ -7264,21 +7264,21 @@ fn function_() {
                             let _e5444 = local_495;
                             let _e5446 = local_499;
                             let _e5447 = local_495;
-                            phi_6653_ = _e5441;
-                            phi_4968_ = (_e5442[2] * _e5444);
-                            phi_4969_ = (_e5446 * _e5447);
-                            phi_4970_ = array<f32, 2>(_e5383, _e5386);
+                            phi_6683_ = _e5441;
+                            phi_4998_ = (_e5442[2] * _e5444);
+                            phi_4999_ = (_e5446 * _e5447);
+                            phi_5000_ = array<f32, 2>(_e5383, _e5386);
                         } else {
                             let _e5377 = local_485;
-                            phi_6653_ = _e5290;
-                            phi_4968_ = (2f * _e5377);
-                            phi_4969_ = 0f;
-                            phi_4970_ = array<f32, 2>((_e5365[0] * _e5367), (_e5369[1] * _e5371));
+                            phi_6683_ = _e5290;
+                            phi_4998_ = (2f * _e5377);
+                            phi_4999_ = 0f;
+                            phi_5000_ = array<f32, 2>((_e5365[0] * _e5367), (_e5369[1] * _e5371));
                         }
-                        let _e5450 = phi_6653_;
-                        let _e5452 = phi_4968_;
-                        let _e5454 = phi_4969_;
-                        let _e5456 = phi_4970_;
+                        let _e5450 = phi_6683_;
+                        let _e5452 = phi_4998_;
+                        let _e5454 = phi_4999_;
+                        let _e5456 = phi_5000_;
                         let _e5457 = local_491;
                         let _e5458 = local_493;
                         let _e5459 = local_492;
@@ -7286,11 +7286,11 @@ fn function_() {
                         let _e5461 = local_620;
                         let _e5462 = local_449;
                         let _e5463 = local_442;
-                        phi_6652_ = _e5450;
-                        phi_4972_ = type_30(_e5456, _e5457, _e5458, _e5459, _e5460, _e5461, _e5462, _e5463, _e5452, _e5454);
+                        phi_6682_ = _e5450;
+                        phi_5002_ = type_30(_e5456, _e5457, _e5458, _e5459, _e5460, _e5461, _e5462, _e5463, _e5452, _e5454);
                     }
-                    let _e5469 = phi_6652_;
-                    let _e5471 = phi_4972_;
+                    let _e5469 = phi_6682_;
+                    let _e5471 = phi_5002_;
                     local_503 = _e5471;
                     let _e5472 = local_22;
                     let _e5473 = local_17;
@@ -7305,9 +7305,9 @@ fn function_() {
                     local_637[6u] = _e5471.member_4[2];
                     local_637[7u] = _e5471.member_3;
                     local_637[8u] = _e5471.member_5;
-                    phi_4995_ = 0u;
+                    phi_5025_ = 0u;
                     loop {
-                        let _e5503 = phi_4995_;
+                        let _e5503 = phi_5025_;
                         local_505 = _e5503;
                         let _e5504 = local_505;
                         let _e5505 = (_e5504 < 9u);
@@ -7319,7 +7319,7 @@ fn function_() {
                             let _e5509 = local_506;
                             if _e5509 {
                             } else {
-                                phi_6649_ = true;
+                                phi_6679_ = true;
                                 break;
                             }
                             let _e5510 = local_505;
@@ -7329,27 +7329,27 @@ fn function_() {
                             let _e5515 = local_7;
                             if (_e5514 < _e5515) {
                             } else {
-                                phi_6649_ = true;
+                                phi_6679_ = true;
                                 break;
                             }
                             let _e5517 = local_507;
                             let _e5520 = local_508;
                             global_5.member[_e5517] = _e5520;
                             let _e5521 = local_505;
-                            phi_4996_ = (_e5521 + 1u);
+                            phi_5026_ = (_e5521 + 1u);
                         } else {
-                            phi_4996_ = u32();
+                            phi_5026_ = u32();
                         }
-                        let _e5524 = phi_4996_;
+                        let _e5524 = phi_5026_;
                         continue;
                         continuing {
                             let _e5525 = local_506;
-                            phi_4995_ = _e5524;
-                            phi_6649_ = _e5469;
+                            phi_5025_ = _e5524;
+                            phi_6679_ = _e5469;
                             break if !(_e5525);
                         }
                     }
-                    let _e5528 = phi_6649_;
+                    let _e5528 = phi_6679_;
                     if _e5528 {
                         break;
                     }
@@ -7358,13 +7358,13 @@ fn function_() {
                     if (_e5529.member_8 < 0f) {
                         let _e5536 = local_509;
                         let _e5538 = local_509;
-                        phi_5035_ = select(-0.5f, _e5538, (_e5536 < -0.5f));
+                        phi_5065_ = select(-0.5f, _e5538, (_e5536 < -0.5f));
                     } else {
                         let _e5532 = local_509;
                         let _e5534 = local_509;
-                        phi_5035_ = select(0.5f, _e5534, (_e5532 > 0.5f));
+                        phi_5065_ = select(0.5f, _e5534, (_e5532 > 0.5f));
                     }
-                    let _e5541 = phi_5035_;
+                    let _e5541 = phi_5065_;
                     local_510 = _e5541;
                     let _e5542 = local_503;
                     local_511 = _e5542.member[0];
@@ -7372,11 +7372,11 @@ fn function_() {
                     local_512 = _e5545.member[1];
                     if (_e5541 < 0f) {
                         let _e5549 = local_510;
-                        phi_5043_ = -(_e5549);
+                        phi_5073_ = -(_e5549);
                     } else {
-                        phi_5043_ = _e5541;
+                        phi_5073_ = _e5541;
                     }
-                    let _e5552 = phi_5043_;
+                    let _e5552 = phi_5073_;
                     let _e5553 = local_503;
                     local_513 = _e5553.member_9;
                     let _e5556 = ((_e5552 + 0.5f) + _e5553.member_9);
@@ -7385,11 +7385,11 @@ fn function_() {
                     let _e5559 = local_512;
                     let _e5562 = local_512;
                     local_581 = floor((_e5562 + _e5556));
-                    phi_5725_ = floor((_e5559 - _e5556));
-                    phi_5726_ = 0f;
+                    phi_5755_ = floor((_e5559 - _e5556));
+                    phi_5756_ = 0f;
                     loop {
-                        let _e5566 = phi_5725_;
-                        let _e5568 = phi_5726_;
+                        let _e5566 = phi_5755_;
+                        let _e5568 = phi_5756_;
                         local_582 = _e5566;
                         local_583 = _e5568;
                         let _e5569 = local_582;
@@ -7414,46 +7414,46 @@ fn function_() {
                                     let _e5586 = local_580;
                                     let _e5587 = local_580;
                                     let _e5589 = local_585;
-                                    phi_5745_ = ((_e5586 * _e5587) - _e5589);
+                                    phi_5777_ = ((_e5586 * _e5587) - _e5589);
                                 } else {
-                                    phi_5745_ = -1f;
+                                    phi_5777_ = -1f;
                                 }
-                                let _e5592 = phi_5745_;
+                                let _e5592 = phi_5777_;
                                 local_588 = _e5592;
                                 if (_e5592 > 0f) {
                                     let _e5594 = local_588;
                                     let _e5595 = sqrt(_e5594);
                                     let _e5596 = local_511;
                                     let _e5600 = local_511;
-                                    phi_5757_ = floor(((_e5600 + _e5595) - 0.5f));
-                                    phi_5758_ = ceil(((_e5596 - _e5595) - 0.5f));
+                                    phi_5789_ = floor(((_e5600 + _e5595) - 0.5f));
+                                    phi_5790_ = ceil(((_e5596 - _e5595) - 0.5f));
                                 } else {
-                                    phi_5757_ = 0f;
-                                    phi_5758_ = 1f;
+                                    phi_5789_ = 0f;
+                                    phi_5790_ = 1f;
                                 }
-                                let _e5605 = phi_5757_;
-                                let _e5607 = phi_5758_;
+                                let _e5605 = phi_5789_;
+                                let _e5607 = phi_5790_;
                                 local_589 = _e5605;
                                 local_590 = _e5607;
                                 if (_e5605 >= _e5607) {
                                     let _e5609 = local_589;
                                     let _e5610 = local_590;
                                     let _e5613 = local_583;
-                                    phi_5766_ = (_e5613 + ((_e5609 - _e5610) + 1f));
+                                    phi_5798_ = (_e5613 + ((_e5609 - _e5610) + 1f));
                                 } else {
-                                    phi_5766_ = _e5568;
+                                    phi_5798_ = _e5568;
                                 }
-                                let _e5616 = phi_5766_;
+                                let _e5616 = phi_5798_;
                                 let _e5617 = local_511;
                                 let _e5618 = local_587;
                                 let _e5622 = local_511;
                                 let _e5623 = local_587;
                                 local_591 = ceil(((_e5622 + _e5623) - 0.5f));
-                                phi_5774_ = floor(((_e5617 - _e5618) - 0.5f));
-                                phi_5775_ = _e5616;
+                                phi_5806_ = floor(((_e5617 - _e5618) - 0.5f));
+                                phi_5807_ = _e5616;
                                 loop {
-                                    let _e5628 = phi_5774_;
-                                    let _e5630 = phi_5775_;
+                                    let _e5628 = phi_5806_;
+                                    let _e5630 = phi_5807_;
                                     local_592 = _e5628;
                                     local_593 = _e5630;
                                     local_669 = _e5630;
@@ -7465,13 +7465,13 @@ fn function_() {
                                         let _e5634 = local_592;
                                         let _e5635 = local_590;
                                         if (_e5634 < _e5635) {
-                                            phi_5787_ = true;
+                                            phi_5820_ = true;
                                         } else {
                                             let _e5637 = local_592;
                                             let _e5638 = local_589;
-                                            phi_5787_ = (_e5637 > _e5638);
+                                            phi_5820_ = (_e5637 > _e5638);
                                         }
-                                        let _e5641 = phi_5787_;
+                                        let _e5641 = phi_5820_;
                                         if _e5641 {
                                             let _e5642 = local_592;
                                             let _e5644 = local_511;
@@ -7481,48 +7481,48 @@ fn function_() {
                                             let _e5653 = local_579;
                                             let _e5655 = ((_e5653 - sqrt(((_e5645 * _e5645) + _e5647))) / (1f + (2f * _e5650)));
                                             let _e5660 = local_593;
-                                            phi_5814_ = (_e5660 + select(0f, select(1f, _e5655, (_e5655 < 1f)), (0f < _e5655)));
+                                            phi_5847_ = (_e5660 + select(0f, select(1f, _e5655, (_e5655 < 1f)), (0f < _e5655)));
                                         } else {
-                                            phi_5814_ = _e5630;
+                                            phi_5847_ = _e5630;
                                         }
-                                        let _e5663 = phi_5814_;
+                                        let _e5663 = phi_5847_;
                                         let _e5664 = local_592;
-                                        phi_5818_ = (_e5664 + 1f);
-                                        phi_5819_ = _e5663;
+                                        phi_5850_ = (_e5664 + 1f);
+                                        phi_5851_ = _e5663;
                                     } else {
-                                        phi_5818_ = f32();
-                                        phi_5819_ = f32();
+                                        phi_5850_ = f32();
+                                        phi_5851_ = f32();
                                     }
-                                    let _e5667 = phi_5818_;
-                                    let _e5669 = phi_5819_;
+                                    let _e5667 = phi_5850_;
+                                    let _e5669 = phi_5851_;
                                     continue;
                                     continuing {
                                         let _e5670 = local_594;
-                                        phi_5774_ = _e5667;
-                                        phi_5775_ = _e5669;
+                                        phi_5806_ = _e5667;
+                                        phi_5807_ = _e5669;
                                         break if !(_e5670);
                                     }
                                 }
                                 let _e6910 = local_669;
-                                phi_5824_ = _e6910;
+                                phi_5855_ = _e6910;
                             } else {
-                                phi_5824_ = _e5568;
+                                phi_5855_ = _e5568;
                             }
-                            let _e5673 = phi_5824_;
+                            let _e5673 = phi_5855_;
                             let _e5674 = local_582;
-                            phi_5828_ = (_e5674 + 1f);
-                            phi_5829_ = _e5673;
+                            phi_5858_ = (_e5674 + 1f);
+                            phi_5859_ = _e5673;
                         } else {
-                            phi_5828_ = f32();
-                            phi_5829_ = f32();
+                            phi_5858_ = f32();
+                            phi_5859_ = f32();
                         }
-                        let _e5677 = phi_5828_;
-                        let _e5679 = phi_5829_;
+                        let _e5677 = phi_5858_;
+                        let _e5679 = phi_5859_;
                         continue;
                         continuing {
                             let _e5680 = local_584;
-                            phi_5725_ = _e5677;
-                            phi_5726_ = _e5679;
+                            phi_5755_ = _e5677;
+                            phi_5756_ = _e5679;
                             break if !(_e5680);
                         }
                     }
@@ -7633,22 +7633,22 @@ fn function_() {
                     }
                     let _e5774 = local_529;
                     global_7.member[_e5774] = 0u;
-                    phi_6684_ = _e5528;
-                    phi_5120_ = type_31(array<f32, 4>(_e4703[0], _e4703[1], _e4703[2], _e4703[3]), array<f32, 3>(_e4698, _e4700, _e4702));
+                    phi_6697_ = _e5528;
+                    phi_5150_ = type_31(array<f32, 4>(_e4703[0], _e4703[1], _e4703[2], _e4703[3]), array<f32, 3>(_e4698, _e4700, _e4702));
                 } else {
-                    phi_6684_ = _e3956;
-                    phi_5120_ = type_31(array<f32, 4>(0f, 0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f));
+                    phi_6697_ = _e3956;
+                    phi_5150_ = type_31(array<f32, 4>(0f, 0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f));
                 }
-                let _e5778 = phi_6684_;
-                let _e5780 = phi_5120_;
-                phi_6683_ = _e5778;
-                phi_5121_ = _e5780;
+                let _e5778 = phi_6697_;
+                let _e5780 = phi_5150_;
+                phi_6696_ = _e5778;
+                phi_5151_ = _e5780;
             } else {
-                phi_6683_ = _e3956;
-                phi_5121_ = type_31(array<f32, 4>(0f, 0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f));
+                phi_6696_ = _e3956;
+                phi_5151_ = type_31(array<f32, 4>(0f, 0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f));
             }
-            let _e5782 = phi_6683_;
-            let _e5784 = phi_5121_;
+            let _e5782 = phi_6696_;
+            let _e5784 = phi_5151_;
             local_530 = _e5784;
             let _e5785 = local_23;
             if _e5785 {
@@ -7659,11 +7659,11 @@ fn function_() {
                     let _e5795 = array<f32, 4>(_e5789.member[0], _e5789.member[1], _e5789.member[2], _e5789.member[3]);
                     local_531 = _e5795;
                     local_631 = _e5795;
-                    phi_6682_ = _e5782;
-                    phi_5143_ = 0u;
+                    phi_6695_ = _e5782;
+                    phi_5173_ = 0u;
                     loop {
-                        let _e5797 = phi_6682_;
-                        let _e5799 = phi_5143_;
+                        let _e5797 = phi_6695_;
+                        let _e5799 = phi_5173_;
                         local_532 = _e5799;
                         let _e5800 = local_532;
                         let _e5801 = (_e5800 < 4u);
@@ -7693,7 +7693,7 @@ fn function_() {
                                     local_538 = _e5824;
                                     if _e5824 {
                                     } else {
-                                        phi_6701_ = true;
+                                        phi_6731_ = true;
                                         break;
                                     }
                                     let _e5825 = local_537;
@@ -7707,7 +7707,7 @@ fn function_() {
                                     local_541 = _e5832;
                                     if _e5832 {
                                     } else {
-                                        phi_6701_ = true;
+                                        phi_6731_ = true;
                                         break;
                                     }
                                     let _e5833 = local_540;
@@ -7721,7 +7721,7 @@ fn function_() {
                                     local_544 = _e5840;
                                     if _e5840 {
                                     } else {
-                                        phi_6701_ = true;
+                                        phi_6731_ = true;
                                         break;
                                     }
                                     let _e5841 = local_543;
@@ -7733,7 +7733,7 @@ fn function_() {
                                     let _e5848 = local_533;
                                     if _e5848 {
                                     } else {
-                                        phi_6701_ = true;
+                                        phi_6731_ = true;
                                         break;
                                     }
                                     let _e5849 = local_532;
@@ -7742,7 +7742,7 @@ fn function_() {
                                         let _e5853 = local_538;
                                         if _e5853 {
                                         } else {
-                                            phi_6701_ = true;
+                                            phi_6731_ = true;
                                             break;
                                         }
                                         let _e5854 = local_539;
@@ -7750,7 +7750,7 @@ fn function_() {
                                         let _e5856 = local_541;
                                         if _e5856 {
                                         } else {
-                                            phi_6701_ = true;
+                                            phi_6731_ = true;
                                             break;
                                         }
                                         let _e5857 = local_542;
@@ -7758,7 +7758,7 @@ fn function_() {
                                         let _e5859 = local_544;
                                         if _e5859 {
                                         } else {
-                                            phi_6701_ = true;
+                                            phi_6731_ = true;
                                             break;
                                         }
                                         let _e5860 = local_545;
@@ -7766,74 +7766,74 @@ fn function_() {
                                         let _e5862 = local_546;
                                         if (_e5862 > 1267650600000000000000000000000f) {
                                             let _e5864 = local_546;
-                                            phi_5250_ = select(true, false, (_e5864 <= 340282350000000000000000000000000000000f));
+                                            phi_5280_ = select(true, false, (_e5864 <= 340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_5250_ = true;
+                                            phi_5280_ = true;
                                         }
-                                        let _e5868 = phi_5250_;
+                                        let _e5868 = phi_5280_;
                                         if _e5868 {
                                             let _e5869 = local_546;
                                             if (_e5869 < 0.000000000000000000000000000000000000011754944f) {
                                                 let _e5871 = local_546;
-                                                phi_5264_ = select(true, false, (_e5871 >= -340282350000000000000000000000000000000f));
+                                                phi_5294_ = select(true, false, (_e5871 >= -340282350000000000000000000000000000000f));
                                             } else {
-                                                phi_5264_ = true;
+                                                phi_5294_ = true;
                                             }
-                                            let _e5875 = phi_5264_;
+                                            let _e5875 = phi_5294_;
                                             let _e5876 = local_546;
-                                            phi_5269_ = select(0f, _e5876, _e5875);
+                                            phi_5299_ = select(0f, _e5876, _e5875);
                                         } else {
-                                            phi_5269_ = 1267650600000000000000000000000f;
+                                            phi_5299_ = 1267650600000000000000000000000f;
                                         }
-                                        let _e5879 = phi_5269_;
+                                        let _e5879 = phi_5299_;
                                         local_549 = _e5879;
                                         let _e5880 = local_547;
                                         if (_e5880 > 1267650600000000000000000000000f) {
                                             let _e5882 = local_547;
-                                            phi_5279_ = select(true, false, (_e5882 <= 340282350000000000000000000000000000000f));
+                                            phi_5309_ = select(true, false, (_e5882 <= 340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_5279_ = true;
+                                            phi_5309_ = true;
                                         }
-                                        let _e5886 = phi_5279_;
+                                        let _e5886 = phi_5309_;
                                         if _e5886 {
                                             let _e5887 = local_547;
                                             if (_e5887 < 0.000000000000000000000000000000000000011754944f) {
                                                 let _e5889 = local_547;
-                                                phi_5293_ = select(true, false, (_e5889 >= -340282350000000000000000000000000000000f));
+                                                phi_5323_ = select(true, false, (_e5889 >= -340282350000000000000000000000000000000f));
                                             } else {
-                                                phi_5293_ = true;
+                                                phi_5323_ = true;
                                             }
-                                            let _e5893 = phi_5293_;
+                                            let _e5893 = phi_5323_;
                                             let _e5894 = local_547;
-                                            phi_5298_ = select(0f, _e5894, _e5893);
+                                            phi_5328_ = select(0f, _e5894, _e5893);
                                         } else {
-                                            phi_5298_ = 1267650600000000000000000000000f;
+                                            phi_5328_ = 1267650600000000000000000000000f;
                                         }
-                                        let _e5897 = phi_5298_;
+                                        let _e5897 = phi_5328_;
                                         local_550 = _e5897;
                                         let _e5898 = local_548;
                                         if (_e5898 > 1267650600000000000000000000000f) {
                                             let _e5900 = local_548;
-                                            phi_5308_ = select(true, false, (_e5900 <= 340282350000000000000000000000000000000f));
+                                            phi_5338_ = select(true, false, (_e5900 <= 340282350000000000000000000000000000000f));
                                         } else {
-                                            phi_5308_ = true;
+                                            phi_5338_ = true;
                                         }
-                                        let _e5904 = phi_5308_;
+                                        let _e5904 = phi_5338_;
                                         if _e5904 {
                                             let _e5905 = local_548;
                                             if (_e5905 < 0.000000000000000000000000000000000000011754944f) {
                                                 let _e5907 = local_548;
-                                                phi_5322_ = select(true, false, (_e5907 >= -340282350000000000000000000000000000000f));
+                                                phi_5352_ = select(true, false, (_e5907 >= -340282350000000000000000000000000000000f));
                                             } else {
-                                                phi_5322_ = true;
+                                                phi_5352_ = true;
                                             }
-                                            let _e5911 = phi_5322_;
+                                            let _e5911 = phi_5352_;
                                             let _e5912 = local_548;
-                                            phi_5327_ = select(0f, _e5912, _e5911);
+                                            phi_5357_ = select(0f, _e5912, _e5911);
                                         } else {
-                                            phi_5327_ = 1267650600000000000000000000000f;
+                                            phi_5357_ = 1267650600000000000000000000000f;
                                         }
-                                        let _e5915 = phi_5327_;
+                                        let _e5915 = phi_5357_;
                                         local_551 = _e5915;
                                         let _e5916 = local_549;
                                         let _e5917 = local_550;
@@ -7842,7 +7842,7 @@ fn function_() {
                                         let _e5920 = local_6;
                                         if (_e5919 < _e5920) {
                                         } else {
-                                            phi_6701_ = true;
+                                            phi_6731_ = true;
                                             break;
                                         }
                                         let _e5922 = local_536;
@@ -7858,52 +7858,52 @@ fn function_() {
                                                     let _e5940 = bitcast<u32>(_e5939);
                                                     local_554 = _e5940;
                                                     if (_e5940 == 0u) {
-                                                        phi_5361_ = false;
+                                                        phi_5391_ = false;
                                                     } else {
                                                         let _e5942 = local_554;
-                                                        phi_5361_ = (_e5942 <= 2139095040u);
+                                                        phi_5391_ = (_e5942 <= 2139095040u);
                                                     }
-                                                    let _e5945 = phi_5361_;
+                                                    let _e5945 = phi_5391_;
                                                     local_555 = _e5945;
                                                     if _e5945 {
                                                         let _e5946 = local_552;
                                                         let _e5947 = local_553;
-                                                        phi_5367_ = type_23(1u, type_22(_e5946, _e5947));
+                                                        phi_5397_ = type_23(1u, type_22(_e5946, _e5947));
                                                     } else {
-                                                        phi_5367_ = type_23();
+                                                        phi_5397_ = type_23();
                                                     }
-                                                    let _e5951 = phi_5367_;
+                                                    let _e5951 = phi_5397_;
                                                     let _e5952 = local_555;
-                                                    phi_5369_ = _e5951;
-                                                    phi_5370_ = select(true, false, _e5952);
+                                                    phi_5399_ = _e5951;
+                                                    phi_5400_ = select(true, false, _e5952);
                                                 } else {
-                                                    phi_5369_ = type_23();
-                                                    phi_5370_ = true;
+                                                    phi_5399_ = type_23();
+                                                    phi_5400_ = true;
                                                 }
-                                                let _e5955 = phi_5369_;
-                                                let _e5957 = phi_5370_;
-                                                phi_5371_ = _e5955;
-                                                phi_5372_ = _e5957;
+                                                let _e5955 = phi_5399_;
+                                                let _e5957 = phi_5400_;
+                                                phi_5401_ = _e5955;
+                                                phi_5402_ = _e5957;
                                             } else {
-                                                phi_5371_ = type_23();
-                                                phi_5372_ = true;
+                                                phi_5401_ = type_23();
+                                                phi_5402_ = true;
                                             }
-                                            let _e5959 = phi_5371_;
-                                            let _e5961 = phi_5372_;
-                                            phi_5373_ = _e5959;
-                                            phi_5374_ = _e5961;
+                                            let _e5959 = phi_5401_;
+                                            let _e5961 = phi_5402_;
+                                            phi_5403_ = _e5959;
+                                            phi_5404_ = _e5961;
                                         } else {
-                                            phi_5373_ = type_23();
-                                            phi_5374_ = true;
+                                            phi_5403_ = type_23();
+                                            phi_5404_ = true;
                                         }
-                                        let _e5963 = phi_5373_;
-                                        let _e5965 = phi_5374_;
+                                        let _e5963 = phi_5403_;
+                                        let _e5965 = phi_5404_;
                                         if _e5965 {
-                                            phi_5379_ = type_23(0u, type_23().member_1);
+                                            phi_5409_ = type_23(0u, type_23().member_1);
                                         } else {
-                                            phi_5379_ = _e5963;
+                                            phi_5409_ = _e5963;
                                         }
-                                        let _e5970 = phi_5379_;
+                                        let _e5970 = phi_5409_;
                                         local_556 = _e5970;
                                         if (bitcast<i32>(_e5970.member) != 0i) {
                                             let _e5974 = local_556;
@@ -7915,7 +7915,7 @@ fn function_() {
                                             let _e5988 = local_533;
                                             if _e5988 {
                                             } else {
-                                                phi_6701_ = true;
+                                                phi_6731_ = true;
                                                 break;
                                             }
                                             let _e5989 = local_532;
@@ -7923,15 +7923,15 @@ fn function_() {
                                             local_557 = _e5991;
                                             if (_e5991 <= 0f) {
                                                 let _e6052 = local_634;
-                                                phi_6707_ = _e5797;
-                                                phi_5506_ = type_25(array<f32, 3>(_e6052[0], _e6052[1], _e6052[2]), array<f32, 3>(0f, 0f, 0f));
+                                                phi_6737_ = _e5797;
+                                                phi_5536_ = type_25(array<f32, 3>(_e6052[0], _e6052[1], _e6052[2]), array<f32, 3>(0f, 0f, 0f));
                                             } else {
                                                 let _e5993 = local_634;
                                                 local_635 = _e5993;
                                                 local_636 = array<f32, 3>(0f, 0f, 0f);
-                                                phi_5434_ = 0u;
+                                                phi_5464_ = 0u;
                                                 loop {
-                                                    let _e5995 = phi_5434_;
+                                                    let _e5995 = phi_5464_;
                                                     local_558 = _e5995;
                                                     let _e5996 = local_558;
                                                     let _e5997 = (_e5996 < 3u);
@@ -7940,7 +7940,7 @@ fn function_() {
                                                         let _e5998 = local_559;
                                                         if _e5998 {
                                                         } else {
-                                                            phi_6654_ = true;
+                                                            phi_6684_ = true;
                                                             break;
                                                         }
                                                         let _e5999 = local_558;
@@ -7949,7 +7949,7 @@ fn function_() {
                                                         let _e6002 = local_559;
                                                         if _e6002 {
                                                         } else {
-                                                            phi_6654_ = true;
+                                                            phi_6684_ = true;
                                                             break;
                                                         }
                                                         let _e6003 = local_558;
@@ -7959,7 +7959,7 @@ fn function_() {
                                                             let _e6008 = local_559;
                                                             if _e6008 {
                                                             } else {
-                                                                phi_6654_ = true;
+                                                                phi_6684_ = true;
                                                                 break;
                                                             }
                                                             let _e6009 = local_634[_e6003];
@@ -7968,7 +7968,7 @@ fn function_() {
                                                             let _e6012 = local_559;
                                                             if _e6012 {
                                                             } else {
-                                                                phi_6654_ = true;
+                                                                phi_6684_ = true;
                                                                 break;
                                                             }
                                                             let _e6013 = local_558;
@@ -7980,7 +7980,7 @@ fn function_() {
                                                             let _e6020 = local_559;
                                                             if _e6020 {
                                                             } else {
-                                                                phi_6654_ = true;
+                                                                phi_6684_ = true;
                                                                 break;
                                                             }
                                                             let _e6021 = local_634[_e6003];
@@ -7992,7 +7992,7 @@ fn function_() {
                                                             let _e6027 = local_559;
                                                             if _e6027 {
                                                             } else {
-                                                                phi_6654_ = true;
+                                                                phi_6684_ = true;
                                                                 break;
                                                             }
                                                             let _e6028 = local_558;
@@ -8001,54 +8001,54 @@ fn function_() {
                                                             local_635[_e6028] = (_e6030 + _e6031);
                                                         }
                                                         let _e6033 = local_558;
-                                                        phi_5435_ = (_e6033 + 1u);
+                                                        phi_5465_ = (_e6033 + 1u);
                                                     } else {
-                                                        phi_5435_ = u32();
+                                                        phi_5465_ = u32();
                                                     }
-                                                    let _e6036 = phi_5435_;
+                                                    let _e6036 = phi_5465_;
                                                     continue;
                                                     continuing {
                                                         let _e6037 = local_559;
-                                                        phi_5434_ = _e6036;
-                                                        phi_6654_ = _e5797;
+                                                        phi_5464_ = _e6036;
+                                                        phi_6684_ = _e5797;
                                                         break if !(_e6037);
                                                     }
                                                 }
-                                                let _e6040 = phi_6654_;
-                                                phi_6701_ = _e6040;
+                                                let _e6040 = phi_6684_;
+                                                phi_6731_ = _e6040;
                                                 if _e6040 {
                                                     break;
                                                 }
                                                 let _e6041 = local_635;
                                                 let _e6046 = local_636;
-                                                phi_6707_ = _e6040;
-                                                phi_5506_ = type_25(array<f32, 3>(_e6041[0], _e6041[1], _e6041[2]), array<f32, 3>(_e6046[0], _e6046[1], _e6046[2]));
+                                                phi_6737_ = _e6040;
+                                                phi_5536_ = type_25(array<f32, 3>(_e6041[0], _e6041[1], _e6041[2]), array<f32, 3>(_e6046[0], _e6046[1], _e6046[2]));
                                             }
-                                            let _e6059 = phi_6707_;
-                                            let _e6061 = phi_5506_;
-                                            phi_6706_ = _e6059;
-                                            phi_5515_ = array<u32, 3>(bitcast<u32>(_e6061.member[0]), bitcast<u32>(_e6061.member[1]), bitcast<u32>(_e6061.member[2]));
+                                            let _e6059 = phi_6737_;
+                                            let _e6061 = phi_5536_;
+                                            phi_6736_ = _e6059;
+                                            phi_5545_ = array<u32, 3>(bitcast<u32>(_e6061.member[0]), bitcast<u32>(_e6061.member[1]), bitcast<u32>(_e6061.member[2]));
                                         } else {
-                                            phi_6706_ = _e5797;
-                                            phi_5515_ = _e5847;
+                                            phi_6736_ = _e5797;
+                                            phi_5545_ = _e5847;
                                         }
-                                        let _e6071 = phi_6706_;
-                                        let _e6073 = phi_5515_;
-                                        phi_6705_ = _e6071;
-                                        phi_5516_ = _e6073;
+                                        let _e6071 = phi_6736_;
+                                        let _e6073 = phi_5545_;
+                                        phi_6735_ = _e6071;
+                                        phi_5546_ = _e6073;
                                     } else {
-                                        phi_6705_ = _e5797;
-                                        phi_5516_ = _e5847;
+                                        phi_6735_ = _e5797;
+                                        phi_5546_ = _e5847;
                                     }
-                                    let _e6075 = phi_6705_;
-                                    let _e6077 = phi_5516_;
+                                    let _e6075 = phi_6735_;
+                                    let _e6077 = phi_5546_;
                                     local_565 = _e6077;
                                     local_566 = _e6077[0];
                                     let _e6079 = local_537;
                                     let _e6080 = local_10;
                                     if (_e6079 < _e6080) {
                                     } else {
-                                        phi_6701_ = true;
+                                        phi_6731_ = true;
                                         break;
                                     }
                                     let _e6082 = local_537;
@@ -8060,7 +8060,7 @@ fn function_() {
                                     let _e6089 = local_10;
                                     if (_e6088 < _e6089) {
                                     } else {
-                                        phi_6701_ = true;
+                                        phi_6731_ = true;
                                         break;
                                     }
                                     let _e6091 = local_540;
@@ -8072,41 +8072,41 @@ fn function_() {
                                     let _e6098 = local_10;
                                     if (_e6097 < _e6098) {
                                     } else {
-                                        phi_6701_ = true;
+                                        phi_6731_ = true;
                                         break;
                                     }
                                     let _e6100 = local_543;
                                     let _e6103 = local_568;
                                     global_8.member[_e6100] = _e6103;
-                                    phi_6704_ = _e6075;
+                                    phi_6734_ = _e6075;
                                 } else {
-                                    phi_6704_ = _e5797;
+                                    phi_6734_ = _e5797;
                                 }
-                                let _e6105 = phi_6704_;
-                                phi_6703_ = _e6105;
+                                let _e6105 = phi_6734_;
+                                phi_6733_ = _e6105;
                             } else {
-                                phi_6703_ = _e5797;
+                                phi_6733_ = _e5797;
                             }
-                            let _e6107 = phi_6703_;
+                            let _e6107 = phi_6733_;
                             let _e6108 = local_532;
-                            phi_6702_ = _e6107;
-                            phi_5144_ = (_e6108 + 1u);
+                            phi_6732_ = _e6107;
+                            phi_5174_ = (_e6108 + 1u);
                         } else {
-                            phi_6702_ = _e5797;
-                            phi_5144_ = u32();
+                            phi_6732_ = _e5797;
+                            phi_5174_ = u32();
                         }
-                        let _e6111 = phi_6702_;
-                        let _e6113 = phi_5144_;
+                        let _e6111 = phi_6732_;
+                        let _e6113 = phi_5174_;
                         continue;
                         continuing {
                             let _e6114 = local_533;
-                            phi_6682_ = _e6111;
-                            phi_5143_ = _e6113;
-                            phi_6701_ = _e6111;
+                            phi_6695_ = _e6111;
+                            phi_5173_ = _e6113;
+                            phi_6731_ = _e6111;
                             break if !(_e6114);
                         }
                     }
-                    let _e6117 = phi_6701_;
+                    let _e6117 = phi_6731_;
                     if _e6117 {
                         break;
                     }
@@ -8117,20 +8117,20 @@ fn function_() {
                 let _e6120 = local_16;
                 if _e6120 {
                     let _e6121 = local_15;
-                    phi_5565_ = (_e6121 + 1u);
+                    phi_5595_ = (_e6121 + 1u);
                 } else {
-                    phi_5565_ = _e756;
+                    phi_5595_ = _e756;
                 }
-                let _e6124 = phi_5565_;
+                let _e6124 = phi_5595_;
                 let _e6125 = (_e6124 / 8u);
                 local_569 = _e6125;
                 if ((_e6124 % 8u) > 0u) {
                     let _e6128 = local_569;
-                    phi_5581_ = (_e6128 + 1u);
+                    phi_5611_ = (_e6128 + 1u);
                 } else {
-                    phi_5581_ = _e6125;
+                    phi_5611_ = _e6125;
                 }
-                let _e6131 = phi_5581_;
+                let _e6131 = phi_5611_;
                 let _e6132 = local_13;
                 let _e6134 = local_12;
                 local_570 = ((_e6132 * _e6131) + _e6134);

@@ -100,55 +100,55 @@ fn function_() {
     var local_65: u32;
     var local_66: u32;
     var phi_94_: u32;
-    var phi_465_: bool;
+    var phi_474_: bool;
     var phi_96_: u32;
     var phi_115_: u32;
     var phi_118_: u32;
     var phi_141_: u32;
     var phi_116_: u32;
     var phi_119_: u32;
-    var phi_461_: bool;
+    var phi_471_: bool;
     var phi_165_: type_17;
     var phi_167_: type_17;
     var phi_168_: bool;
     var phi_169_: type_17;
     var phi_170_: bool;
     var phi_175_: type_17;
-    var phi_315_: u32;
-    var phi_318_: u32;
-    var phi_354_: u32;
-    var phi_316_: u32;
-    var phi_319_: u32;
-    var phi_467_: bool;
-    var phi_207_: u32;
-    var phi_210_: u32;
-    var phi_211_: u32;
-    var phi_213_: u32;
-    var phi_241_: u32;
-    var phi_208_: u32;
-    var phi_212_: u32;
-    var phi_214_: u32;
+    var phi_325_: u32;
+    var phi_328_: u32;
+    var phi_364_: u32;
+    var phi_326_: u32;
+    var phi_329_: u32;
     var phi_477_: bool;
-    var phi_258_: u32;
-    var phi_261_: u32;
-    var phi_263_: u32;
-    var phi_278_: u32;
-    var phi_259_: u32;
-    var phi_262_: u32;
-    var phi_264_: u32;
-    var phi_482_: bool;
-    var phi_493_: bool;
-    var phi_369_: u32;
-    var phi_391_: u32;
-    var phi_393_: u32;
-    var phi_396_: u32;
-    var phi_425_: u32;
-    var phi_394_: u32;
-    var phi_397_: u32;
-    var phi_488_: bool;
-    var phi_495_: bool;
+    var phi_212_: u32;
+    var phi_215_: u32;
+    var phi_216_: u32;
+    var phi_218_: u32;
+    var phi_246_: u32;
+    var phi_213_: u32;
+    var phi_217_: u32;
+    var phi_219_: u32;
+    var phi_487_: bool;
+    var phi_268_: u32;
+    var phi_271_: u32;
+    var phi_273_: u32;
+    var phi_288_: u32;
+    var phi_269_: u32;
+    var phi_272_: u32;
+    var phi_274_: u32;
+    var phi_492_: bool;
+    var phi_502_: bool;
+    var phi_379_: u32;
+    var phi_401_: u32;
+    var phi_403_: u32;
+    var phi_406_: u32;
+    var phi_435_: u32;
+    var phi_404_: u32;
+    var phi_407_: u32;
+    var phi_498_: bool;
+    var phi_505_: bool;
     var phi_97_: u32;
-    var phi_494_: bool;
+    var phi_504_: bool;
     var local_67: u32;
     var local_68: u32;
     var local_69: u32;
@@ -183,10 +183,10 @@ fn function_() {
             }
             let _e118 = phi_94_;
             local_10 = _e118;
-            phi_465_ = false;
+            phi_474_ = false;
             phi_96_ = _e97.x;
             loop {
-                let _e120 = phi_465_;
+                let _e120 = phi_474_;
                 let _e122 = phi_96_;
                 local_11 = _e122;
                 let _e123 = local_11;
@@ -221,7 +221,7 @@ fn function_() {
                                 let _e149 = local_5;
                                 if (_e148 < _e149) {
                                 } else {
-                                    phi_461_ = true;
+                                    phi_471_ = true;
                                     break;
                                 }
                                 let _e151 = local_18;
@@ -246,19 +246,19 @@ fn function_() {
                             let _e165 = local_17;
                             phi_115_ = _e162;
                             phi_118_ = _e164;
-                            phi_461_ = _e120;
+                            phi_471_ = _e120;
                             break if !(_e165);
                         }
                     }
-                    let _e168 = phi_461_;
-                    phi_494_ = _e168;
+                    let _e168 = phi_471_;
+                    phi_504_ = _e168;
                     if _e168 {
                         break;
                     }
                     let _e169 = local;
                     if (_e169 < 512u) {
                     } else {
-                        phi_494_ = true;
+                        phi_504_ = true;
                         break;
                     }
                     let _e171 = local;
@@ -317,7 +317,7 @@ fn function_() {
                         local_22 = _e266;
                         if (_e266 < 512u) {
                         } else {
-                            phi_494_ = true;
+                            phi_504_ = true;
                             break;
                         }
                         let _e268 = local_22;
@@ -329,7 +329,7 @@ fn function_() {
                         local_24 = _e273;
                         if (_e273 < 512u) {
                         } else {
-                            phi_494_ = true;
+                            phi_504_ = true;
                             break;
                         }
                         let _e275 = local_24;
@@ -337,15 +337,15 @@ fn function_() {
                         global_3[_e275] = _e277;
                         storageBarrier();
                         workgroupBarrier();
-                        phi_207_ = 0u;
-                        phi_210_ = 256u;
-                        phi_211_ = 256u;
-                        phi_213_ = 0u;
+                        phi_212_ = 0u;
+                        phi_215_ = 256u;
+                        phi_216_ = 256u;
+                        phi_218_ = 0u;
                         loop {
-                            let _e279 = phi_207_;
-                            let _e281 = phi_210_;
-                            let _e283 = phi_211_;
-                            let _e285 = phi_213_;
+                            let _e279 = phi_212_;
+                            let _e281 = phi_215_;
+                            let _e283 = phi_216_;
+                            let _e285 = phi_218_;
                             local_25 = _e279;
                             local_26 = _e281;
                             local_27 = _e283;
@@ -375,16 +375,16 @@ fn function_() {
                                     local_33 = _e303;
                                     if (_e303 < 512u) {
                                     } else {
-                                        phi_477_ = true;
+                                        phi_487_ = true;
                                         break;
                                     }
                                     let _e305 = local_33;
                                     let _e307 = global_3[_e305];
-                                    phi_241_ = _e307;
+                                    phi_246_ = _e307;
                                 } else {
-                                    phi_241_ = 0u;
+                                    phi_246_ = 0u;
                                 }
-                                let _e309 = phi_241_;
+                                let _e309 = phi_246_;
                                 let _e310 = subgroupInclusiveAdd(_e309);
                                 local_34 = _e310;
                                 let _e311 = local_32;
@@ -395,7 +395,7 @@ fn function_() {
                                     local_35 = _e314;
                                     if (_e314 < 512u) {
                                     } else {
-                                        phi_477_ = true;
+                                        phi_487_ = true;
                                         break;
                                     }
                                     let _e316 = local_35;
@@ -407,43 +407,43 @@ fn function_() {
                                 let _e319 = local_25;
                                 let _e320 = local_31;
                                 let _e322 = local_28;
-                                phi_208_ = (_e319 + _e320);
-                                phi_212_ = _e293;
-                                phi_214_ = (_e322 + 1u);
+                                phi_213_ = (_e319 + _e320);
+                                phi_217_ = _e293;
+                                phi_219_ = (_e322 + 1u);
                             } else {
-                                phi_208_ = u32();
-                                phi_212_ = u32();
-                                phi_214_ = u32();
+                                phi_213_ = u32();
+                                phi_217_ = u32();
+                                phi_219_ = u32();
                             }
-                            let _e325 = phi_208_;
-                            let _e327 = phi_212_;
-                            let _e329 = phi_214_;
+                            let _e325 = phi_213_;
+                            let _e327 = phi_217_;
+                            let _e329 = phi_219_;
                             continue;
                             continuing {
                                 let _e330 = local_29;
-                                phi_207_ = _e325;
-                                phi_210_ = _e279;
-                                phi_211_ = _e327;
-                                phi_213_ = _e329;
-                                phi_477_ = _e168;
+                                phi_212_ = _e325;
+                                phi_215_ = _e279;
+                                phi_216_ = _e327;
+                                phi_218_ = _e329;
+                                phi_487_ = _e168;
                                 break if !(_e330);
                             }
                         }
-                        let _e333 = phi_477_;
-                        phi_494_ = _e333;
+                        let _e333 = phi_487_;
+                        phi_504_ = _e333;
                         if _e333 {
                             break;
                         }
                         let _e509 = local_67;
-                        phi_258_ = _e509;
+                        phi_268_ = _e509;
                         let _e512 = local_68;
-                        phi_261_ = _e512;
+                        phi_271_ = _e512;
                         let _e515 = local_69;
-                        phi_263_ = _e515;
+                        phi_273_ = _e515;
                         loop {
-                            let _e335 = phi_258_;
-                            let _e337 = phi_261_;
-                            let _e339 = phi_263_;
+                            let _e335 = phi_268_;
+                            let _e337 = phi_271_;
+                            let _e339 = phi_273_;
                             local_36 = _e335;
                             local_37 = _e337;
                             local_38 = _e339;
@@ -459,13 +459,13 @@ fn function_() {
                                 local_41 = _e346;
                                 let _e347 = local_38;
                                 if (_e347 == 1u) {
-                                    phi_278_ = 256u;
+                                    phi_288_ = 256u;
                                 } else {
                                     let _e349 = local_36;
                                     let _e350 = local_41;
-                                    phi_278_ = (_e349 - _e350);
+                                    phi_288_ = (_e349 - _e350);
                                 }
-                                let _e353 = phi_278_;
+                                let _e353 = phi_288_;
                                 local_42 = _e353;
                                 let _e354 = local;
                                 let _e355 = local_20;
@@ -483,7 +483,7 @@ fn function_() {
                                         local_44 = _e369;
                                         if (_e369 < 512u) {
                                         } else {
-                                            phi_482_ = true;
+                                            phi_492_ = true;
                                             break;
                                         }
                                         let _e371 = local_44;
@@ -494,7 +494,7 @@ fn function_() {
                                         local_46 = _e375;
                                         if _e375 {
                                         } else {
-                                            phi_482_ = true;
+                                            phi_492_ = true;
                                             break;
                                         }
                                         let _e376 = local_43;
@@ -504,7 +504,7 @@ fn function_() {
                                         let _e381 = local_46;
                                         if _e381 {
                                         } else {
-                                            phi_482_ = true;
+                                            phi_492_ = true;
                                             break;
                                         }
                                         let _e382 = local_47;
@@ -514,40 +514,40 @@ fn function_() {
                                 storageBarrier();
                                 workgroupBarrier();
                                 let _e383 = local_38;
-                                phi_259_ = _e353;
-                                phi_262_ = _e346;
-                                phi_264_ = (_e383 - 1u);
+                                phi_269_ = _e353;
+                                phi_272_ = _e346;
+                                phi_274_ = (_e383 - 1u);
                             } else {
-                                phi_259_ = u32();
-                                phi_262_ = u32();
-                                phi_264_ = u32();
+                                phi_269_ = u32();
+                                phi_272_ = u32();
+                                phi_274_ = u32();
                             }
-                            let _e386 = phi_259_;
-                            let _e388 = phi_262_;
-                            let _e390 = phi_264_;
+                            let _e386 = phi_269_;
+                            let _e388 = phi_272_;
+                            let _e390 = phi_274_;
                             continue;
                             continuing {
                                 let _e391 = local_39;
-                                phi_258_ = _e386;
-                                phi_261_ = _e388;
-                                phi_263_ = _e390;
-                                phi_482_ = _e333;
+                                phi_268_ = _e386;
+                                phi_271_ = _e388;
+                                phi_273_ = _e390;
+                                phi_492_ = _e333;
                                 break if !(_e391);
                             }
                         }
-                        let _e394 = phi_482_;
-                        phi_494_ = _e394;
+                        let _e394 = phi_492_;
+                        phi_504_ = _e394;
                         if _e394 {
                             break;
                         }
-                        phi_493_ = _e394;
-                        phi_369_ = 256u;
+                        phi_502_ = _e394;
+                        phi_379_ = 256u;
                     } else {
-                        phi_315_ = 1u;
-                        phi_318_ = 0u;
+                        phi_325_ = 1u;
+                        phi_328_ = 0u;
                         loop {
-                            let _e209 = phi_315_;
-                            let _e211 = phi_318_;
+                            let _e209 = phi_325_;
+                            let _e211 = phi_328_;
                             local_48 = _e209;
                             local_49 = _e211;
                             local_70 = _e211;
@@ -564,7 +564,7 @@ fn function_() {
                                 local_51 = _e219;
                                 if (_e219 < 512u) {
                                 } else {
-                                    phi_467_ = true;
+                                    phi_477_ = true;
                                     break;
                                 }
                                 let _e221 = local_51;
@@ -580,17 +580,17 @@ fn function_() {
                                     local_53 = _e231;
                                     if (_e231 < 512u) {
                                     } else {
-                                        phi_467_ = true;
+                                        phi_477_ = true;
                                         break;
                                     }
                                     let _e233 = local_53;
                                     let _e235 = global_3[_e233];
                                     let _e236 = local_52;
-                                    phi_354_ = (_e235 + _e236);
+                                    phi_364_ = (_e235 + _e236);
                                 } else {
-                                    phi_354_ = _e223;
+                                    phi_364_ = _e223;
                                 }
-                                let _e239 = phi_354_;
+                                let _e239 = phi_364_;
                                 local_54 = _e239;
                                 let _e240 = local_66;
                                 let _e241 = local;
@@ -598,7 +598,7 @@ fn function_() {
                                 local_55 = _e242;
                                 if (_e242 < 512u) {
                                 } else {
-                                    phi_467_ = true;
+                                    phi_477_ = true;
                                     break;
                                 }
                                 let _e244 = local_55;
@@ -607,40 +607,40 @@ fn function_() {
                                 storageBarrier();
                                 workgroupBarrier();
                                 let _e247 = local_48;
-                                phi_316_ = (_e247 * 2u);
-                                phi_319_ = _e216;
+                                phi_326_ = (_e247 * 2u);
+                                phi_329_ = _e216;
                             } else {
-                                phi_316_ = u32();
-                                phi_319_ = u32();
+                                phi_326_ = u32();
+                                phi_329_ = u32();
                             }
-                            let _e250 = phi_316_;
-                            let _e252 = phi_319_;
+                            let _e250 = phi_326_;
+                            let _e252 = phi_329_;
                             continue;
                             continuing {
                                 let _e253 = local_50;
-                                phi_315_ = _e250;
-                                phi_318_ = _e252;
-                                phi_467_ = _e168;
+                                phi_325_ = _e250;
+                                phi_328_ = _e252;
+                                phi_477_ = _e168;
                                 break if !(_e253);
                             }
                         }
-                        let _e256 = phi_467_;
-                        phi_494_ = _e256;
+                        let _e256 = phi_477_;
+                        phi_504_ = _e256;
                         if _e256 {
                             break;
                         }
-                        phi_493_ = _e256;
+                        phi_502_ = _e256;
                         let _e524 = local_70;
-                        phi_369_ = _e524;
+                        phi_379_ = _e524;
                     }
-                    let _e396 = phi_493_;
-                    let _e398 = phi_369_;
+                    let _e396 = phi_502_;
+                    let _e398 = phi_379_;
                     let _e399 = local;
                     let _e400 = (_e398 + _e399);
                     local_56 = _e400;
                     if (_e400 < 512u) {
                     } else {
-                        phi_494_ = true;
+                        phi_504_ = true;
                         break;
                     }
                     let _e402 = local_56;
@@ -648,26 +648,26 @@ fn function_() {
                     local_57 = _e404;
                     let _e405 = local;
                     if (_e405 == 0u) {
-                        phi_391_ = 0u;
+                        phi_401_ = 0u;
                     } else {
                         let _e407 = local_56;
                         let _e408 = (_e407 - 1u);
                         local_58 = _e408;
                         if (_e408 < 512u) {
                         } else {
-                            phi_494_ = true;
+                            phi_504_ = true;
                             break;
                         }
                         let _e410 = local_58;
                         let _e412 = global_3[_e410];
-                        phi_391_ = _e412;
+                        phi_401_ = _e412;
                     }
-                    let _e414 = phi_391_;
-                    phi_393_ = 0u;
-                    phi_396_ = _e414;
+                    let _e414 = phi_401_;
+                    phi_403_ = 0u;
+                    phi_406_ = _e414;
                     loop {
-                        let _e416 = phi_393_;
-                        let _e418 = phi_396_;
+                        let _e416 = phi_403_;
+                        let _e418 = phi_406_;
                         local_59 = _e416;
                         local_60 = _e418;
                         let _e419 = local_59;
@@ -687,7 +687,7 @@ fn function_() {
                                 local_63 = _e431;
                                 if _e431 {
                                 } else {
-                                    phi_488_ = true;
+                                    phi_498_ = true;
                                     break;
                                 }
                                 let _e432 = local_62;
@@ -696,38 +696,38 @@ fn function_() {
                                 let _e436 = local_63;
                                 if _e436 {
                                 } else {
-                                    phi_488_ = true;
+                                    phi_498_ = true;
                                     break;
                                 }
                                 let _e437 = local_60;
                                 global_5.member[_e432] = _e437;
                                 let _e438 = local_60;
                                 let _e439 = local_64;
-                                phi_425_ = (_e438 + _e439);
+                                phi_435_ = (_e438 + _e439);
                             } else {
-                                phi_425_ = _e418;
+                                phi_435_ = _e418;
                             }
-                            let _e442 = phi_425_;
+                            let _e442 = phi_435_;
                             let _e443 = local_59;
-                            phi_394_ = (_e443 + 1u);
-                            phi_397_ = _e442;
+                            phi_404_ = (_e443 + 1u);
+                            phi_407_ = _e442;
                         } else {
-                            phi_394_ = u32();
-                            phi_397_ = u32();
+                            phi_404_ = u32();
+                            phi_407_ = u32();
                         }
-                        let _e446 = phi_394_;
-                        let _e448 = phi_397_;
+                        let _e446 = phi_404_;
+                        let _e448 = phi_407_;
                         continue;
                         continuing {
                             let _e449 = local_61;
-                            phi_393_ = _e446;
-                            phi_396_ = _e448;
-                            phi_488_ = _e396;
+                            phi_403_ = _e446;
+                            phi_406_ = _e448;
+                            phi_498_ = _e396;
                             break if !(_e449);
                         }
                     }
-                    let _e452 = phi_488_;
-                    phi_494_ = _e452;
+                    let _e452 = phi_498_;
+                    phi_504_ = _e452;
                     if _e452 {
                         break;
                     }
@@ -740,7 +740,7 @@ fn function_() {
                         let _e460 = local_6;
                         if (_e459 < _e460) {
                         } else {
-                            phi_494_ = true;
+                            phi_504_ = true;
                             break;
                         }
                         let _e462 = local_65;
@@ -751,24 +751,24 @@ fn function_() {
                     workgroupBarrier();
                     let _e466 = local_11;
                     let _e467 = local_7;
-                    phi_495_ = _e452;
+                    phi_505_ = _e452;
                     phi_97_ = (_e466 + _e467);
                 } else {
-                    phi_495_ = _e120;
+                    phi_505_ = _e120;
                     phi_97_ = u32();
                 }
-                let _e470 = phi_495_;
+                let _e470 = phi_505_;
                 let _e472 = phi_97_;
                 continue;
                 continuing {
                     let _e473 = local_12;
-                    phi_465_ = _e470;
+                    phi_474_ = _e470;
                     phi_96_ = _e472;
-                    phi_494_ = _e470;
+                    phi_504_ = _e470;
                     break if !(_e473);
                 }
             }
-            let _e476 = phi_494_;
+            let _e476 = phi_504_;
             if _e476 {
                 break;
             }

@@ -594,79 +594,72 @@ fn function_() {
     var local_488: array<bool, 1>;
     var local_489: array<u32, 1>;
     var local_490: array<bool, 1>;
-    var phi_4751_: bool;
-    var phi_4753_: bool;
-    var phi_4754_: bool;
-    var phi_4809_: array<f32, 3>;
+    var phi_4863_: bool;
+    var phi_4865_: bool;
+    var phi_4866_: bool;
+    var phi_4921_: array<f32, 3>;
     var phi_367_: u32;
     var phi_370_: u32;
     var phi_402_: u32;
     var phi_368_: u32;
     var phi_371_: u32;
-    var phi_4962_: bool;
+    var phi_5074_: bool;
     var phi_427_: type_17;
     var phi_429_: type_17;
     var phi_430_: bool;
     var phi_431_: type_17;
     var phi_432_: bool;
     var phi_437_: type_17;
-    var phi_524_: u32;
-    var phi_525_: u32;
-    var phi_4969_: bool;
+    var phi_580_: u32;
+    var phi_581_: u32;
+    var phi_5081_: bool;
     var phi_449_: u32;
     var phi_452_: u32;
     var phi_476_: u32;
     var phi_450_: u32;
     var phi_453_: u32;
-    var phi_4978_: bool;
-    var phi_519_: u32;
-    var phi_4987_: bool;
-    var phi_572_: u32;
-    var phi_574_: u32;
-    var phi_575_: u32;
-    var phi_4984_: bool;
-    var phi_647_: bool;
-    var phi_649_: bool;
-    var phi_650_: bool;
-    var phi_695_: f32;
-    var phi_706_: u32;
-    var phi_707_: u32;
-    var phi_4989_: bool;
-    var phi_5021_: bool;
-    var phi_757_: u32;
-    var phi_760_: u32;
-    var phi_840_: array<f32, 3>;
-    var phi_851_: f32;
-    var phi_877_: u32;
-    var phi_890_: u32;
-    var phi_929_: type_30;
-    var phi_943_: f32;
-    var phi_972_: bool;
-    var phi_1000_: f32;
-    var phi_1001_: f32;
-    var phi_1007_: f32;
-    var phi_1009_: f32;
-    var phi_5011_: bool;
-    var phi_1124_: f32;
-    var phi_1127_: f32;
-    var phi_1138_: f32;
-    var phi_1141_: f32;
-    var phi_1165_: bool;
-    var phi_1201_: bool;
-    var phi_1537_: u32;
-    var phi_1540_: f32;
-    var phi_1542_: array<f32, 2>;
-    var phi_1538_: u32;
-    var phi_1541_: f32;
-    var phi_1543_: array<f32, 2>;
-    var phi_1595_: f32;
-    var phi_1317_: f32;
-    var phi_1318_: f32;
-    var phi_1319_: bool;
-    var phi_1320_: f32;
-    var phi_1321_: bool;
-    var phi_1322_: f32;
-    var phi_1323_: bool;
+    var phi_5090_: bool;
+    var phi_547_: u32;
+    var phi_5099_: bool;
+    var phi_628_: u32;
+    var phi_630_: u32;
+    var phi_631_: u32;
+    var phi_5096_: bool;
+    var phi_703_: bool;
+    var phi_705_: bool;
+    var phi_706_: bool;
+    var phi_751_: f32;
+    var phi_762_: u32;
+    var phi_763_: u32;
+    var phi_5101_: bool;
+    var phi_5131_: bool;
+    var phi_813_: u32;
+    var phi_816_: u32;
+    var phi_896_: array<f32, 3>;
+    var phi_907_: f32;
+    var phi_933_: u32;
+    var phi_946_: u32;
+    var phi_985_: type_30;
+    var phi_999_: f32;
+    var phi_1028_: bool;
+    var phi_1056_: f32;
+    var phi_1057_: f32;
+    var phi_1063_: f32;
+    var phi_1065_: f32;
+    var phi_5115_: bool;
+    var phi_1180_: f32;
+    var phi_1183_: f32;
+    var phi_1194_: f32;
+    var phi_1197_: f32;
+    var phi_1221_: bool;
+    var phi_1257_: bool;
+    var phi_1593_: u32;
+    var phi_1596_: f32;
+    var phi_1598_: array<f32, 2>;
+    var phi_1594_: u32;
+    var phi_1597_: f32;
+    var phi_1599_: array<f32, 2>;
+    var phi_1651_: f32;
     var phi_1373_: f32;
     var phi_1374_: f32;
     var phi_1375_: bool;
@@ -681,92 +674,92 @@ fn function_() {
     var phi_1433_: bool;
     var phi_1434_: f32;
     var phi_1435_: bool;
+    var phi_1485_: f32;
     var phi_1486_: f32;
-    var phi_1487_: f32;
-    var phi_1488_: bool;
-    var phi_1489_: f32;
-    var phi_1490_: bool;
-    var phi_1491_: f32;
-    var phi_1492_: bool;
-    var phi_1503_: f32;
-    var phi_1505_: f32;
-    var phi_1506_: bool;
-    var phi_1507_: f32;
-    var phi_1508_: bool;
-    var phi_1509_: f32;
-    var phi_1510_: bool;
-    var phi_1515_: f32;
-    var phi_1608_: f32;
-    var phi_1609_: f32;
-    var phi_1610_: f32;
-    var phi_1616_: u32;
-    var phi_1619_: f32;
-    var phi_1617_: u32;
-    var phi_1620_: f32;
-    var phi_1139_: f32;
-    var phi_1142_: f32;
-    var phi_5000_: bool;
-    var phi_5068_: bool;
-    var phi_1125_: f32;
-    var phi_1128_: f32;
-    var phi_5067_: bool;
-    var phi_1109_: f32;
-    var phi_5085_: bool;
-    var phi_1632_: f32;
-    var phi_5084_: bool;
-    var phi_1634_: f32;
-    var phi_1636_: u32;
-    var phi_1637_: u32;
-    var phi_1658_: bool;
-    var phi_5080_: bool;
-    var phi_1763_: u32;
-    var phi_1829_: bool;
-    var phi_1831_: bool;
-    var phi_1832_: bool;
-    var phi_1764_: u32;
-    var phi_5069_: bool;
-    var phi_2063_: u32;
-    var phi_2084_: bool;
-    var phi_2064_: u32;
-    var phi_5087_: bool;
-    var phi_5099_: bool;
-    var phi_2097_: u32;
-    var phi_2127_: u32;
-    var phi_2130_: u32;
+    var phi_1487_: bool;
+    var phi_1488_: f32;
+    var phi_1489_: bool;
+    var phi_1490_: f32;
+    var phi_1491_: bool;
+    var phi_1542_: f32;
+    var phi_1543_: f32;
+    var phi_1544_: bool;
+    var phi_1545_: f32;
+    var phi_1546_: bool;
+    var phi_1547_: f32;
+    var phi_1548_: bool;
+    var phi_1559_: f32;
+    var phi_1561_: f32;
+    var phi_1562_: bool;
+    var phi_1563_: f32;
+    var phi_1564_: bool;
+    var phi_1565_: f32;
+    var phi_1566_: bool;
+    var phi_1571_: f32;
+    var phi_1664_: f32;
+    var phi_1665_: f32;
+    var phi_1666_: f32;
+    var phi_1672_: u32;
+    var phi_1675_: f32;
+    var phi_1673_: u32;
+    var phi_1676_: f32;
+    var phi_1195_: f32;
+    var phi_1198_: f32;
+    var phi_5112_: bool;
+    var phi_5180_: bool;
+    var phi_1181_: f32;
+    var phi_1184_: f32;
+    var phi_5179_: bool;
+    var phi_1165_: f32;
+    var phi_5189_: bool;
+    var phi_1688_: f32;
+    var phi_5188_: bool;
+    var phi_1690_: f32;
+    var phi_1692_: u32;
+    var phi_1693_: u32;
+    var phi_1714_: bool;
+    var phi_5185_: bool;
+    var phi_1819_: u32;
+    var phi_1885_: bool;
+    var phi_1887_: bool;
+    var phi_1888_: bool;
+    var phi_1820_: u32;
+    var phi_5181_: bool;
+    var phi_2119_: u32;
+    var phi_2140_: bool;
+    var phi_2120_: u32;
+    var phi_5199_: bool;
+    var phi_5210_: bool;
+    var phi_2153_: u32;
+    var phi_2183_: u32;
+    var phi_2186_: u32;
+    var phi_2210_: u32;
+    var phi_2184_: u32;
+    var phi_2187_: u32;
+    var phi_5207_: bool;
+    var phi_5214_: bool;
+    var phi_2212_: u32;
+    var phi_5213_: bool;
     var phi_2154_: u32;
-    var phi_2128_: u32;
-    var phi_2131_: u32;
-    var phi_5095_: bool;
-    var phi_5102_: bool;
-    var phi_2156_: u32;
-    var phi_5101_: bool;
-    var phi_2098_: u32;
-    var phi_5100_: bool;
-    var phi_5108_: bool;
-    var phi_2187_: f32;
-    var phi_2190_: type_32;
-    var phi_2192_: u32;
-    var phi_2194_: u32;
-    var phi_2196_: f32;
-    var phi_2198_: f32;
-    var phi_2200_: bool;
-    var phi_2202_: array<f32, 3>;
-    var phi_3166_: bool;
-    var phi_3212_: bool;
-    var phi_3548_: u32;
-    var phi_3551_: f32;
-    var phi_3553_: array<f32, 2>;
-    var phi_3549_: u32;
-    var phi_3552_: f32;
-    var phi_3554_: array<f32, 2>;
-    var phi_3606_: f32;
-    var phi_3328_: f32;
-    var phi_3329_: f32;
-    var phi_3330_: bool;
-    var phi_3331_: f32;
-    var phi_3332_: bool;
-    var phi_3333_: f32;
-    var phi_3334_: bool;
+    var phi_5212_: bool;
+    var phi_5218_: bool;
+    var phi_2243_: f32;
+    var phi_2246_: type_32;
+    var phi_2248_: u32;
+    var phi_2250_: u32;
+    var phi_2252_: f32;
+    var phi_2254_: f32;
+    var phi_2256_: bool;
+    var phi_2258_: array<f32, 3>;
+    var phi_3222_: bool;
+    var phi_3268_: bool;
+    var phi_3604_: u32;
+    var phi_3607_: f32;
+    var phi_3609_: array<f32, 2>;
+    var phi_3605_: u32;
+    var phi_3608_: f32;
+    var phi_3610_: array<f32, 2>;
+    var phi_3662_: f32;
     var phi_3384_: f32;
     var phi_3385_: f32;
     var phi_3386_: bool;
@@ -781,142 +774,149 @@ fn function_() {
     var phi_3444_: bool;
     var phi_3445_: f32;
     var phi_3446_: bool;
+    var phi_3496_: f32;
     var phi_3497_: f32;
-    var phi_3498_: f32;
-    var phi_3499_: bool;
-    var phi_3500_: f32;
-    var phi_3501_: bool;
-    var phi_3502_: f32;
-    var phi_3503_: bool;
-    var phi_3514_: f32;
-    var phi_3516_: f32;
-    var phi_3517_: bool;
-    var phi_3518_: f32;
-    var phi_3519_: bool;
-    var phi_3520_: f32;
-    var phi_3521_: bool;
-    var phi_3526_: f32;
-    var phi_3619_: f32;
-    var phi_3620_: f32;
-    var phi_3621_: f32;
-    var phi_2290_: u32;
-    var phi_2293_: f32;
-    var phi_2295_: u32;
-    var phi_3106_: f32;
-    var phi_3111_: f32;
-    var phi_3130_: f32;
-    var phi_3133_: f32;
-    var phi_3134_: u32;
-    var phi_3136_: u32;
-    var phi_3137_: f32;
-    var phi_3138_: u32;
-    var phi_2291_: u32;
-    var phi_2294_: f32;
-    var phi_2296_: u32;
-    var phi_3139_: bool;
-    var phi_5103_: bool;
-    var phi_3150_: f32;
-    var phi_5232_: bool;
-    var phi_3155_: f32;
-    var phi_5231_: bool;
-    var phi_3622_: f32;
-    var phi_3783_: f32;
-    var phi_3707_: f32;
-    var phi_3717_: type_19;
-    var phi_3718_: type_19;
-    var phi_3730_: f32;
-    var phi_3741_: type_19;
-    var phi_3793_: type_32;
-    var phi_3794_: type_19;
-    var phi_3879_: u32;
-    var phi_3880_: f32;
-    var phi_3881_: f32;
-    var phi_3882_: bool;
-    var phi_5211_: bool;
-    var phi_3883_: f32;
-    var phi_3884_: type_32;
-    var phi_3885_: u32;
-    var phi_3886_: f32;
-    var phi_3887_: f32;
-    var phi_3888_: bool;
-    var phi_3889_: array<f32, 3>;
-    var phi_5210_: bool;
-    var phi_2188_: f32;
-    var phi_2191_: type_32;
-    var phi_2193_: u32;
-    var phi_2195_: u32;
-    var phi_2197_: f32;
-    var phi_2199_: f32;
-    var phi_2201_: bool;
-    var phi_2203_: array<f32, 3>;
-    var phi_5209_: bool;
-    var phi_3893_: u32;
-    var phi_3894_: u32;
-    var phi_5285_: bool;
-    var phi_3914_: u32;
-    var phi_3915_: u32;
-    var phi_5288_: bool;
+    var phi_3498_: bool;
+    var phi_3499_: f32;
+    var phi_3500_: bool;
+    var phi_3501_: f32;
+    var phi_3502_: bool;
+    var phi_3553_: f32;
+    var phi_3554_: f32;
+    var phi_3555_: bool;
+    var phi_3556_: f32;
+    var phi_3557_: bool;
+    var phi_3558_: f32;
+    var phi_3559_: bool;
+    var phi_3570_: f32;
+    var phi_3572_: f32;
+    var phi_3573_: bool;
+    var phi_3574_: f32;
+    var phi_3575_: bool;
+    var phi_3576_: f32;
+    var phi_3577_: bool;
+    var phi_3582_: f32;
+    var phi_3675_: f32;
+    var phi_3676_: f32;
+    var phi_3677_: f32;
+    var phi_2346_: u32;
+    var phi_2349_: f32;
+    var phi_2351_: u32;
+    var phi_3162_: f32;
+    var phi_3167_: f32;
+    var phi_3186_: f32;
+    var phi_3189_: f32;
+    var phi_3190_: u32;
+    var phi_3192_: u32;
+    var phi_3193_: f32;
+    var phi_3194_: u32;
+    var phi_2347_: u32;
+    var phi_2350_: f32;
+    var phi_2352_: u32;
+    var phi_3195_: bool;
+    var phi_5215_: bool;
+    var phi_3206_: f32;
+    var phi_5377_: bool;
+    var phi_3211_: f32;
+    var phi_5333_: bool;
+    var phi_3678_: f32;
+    var phi_3839_: f32;
+    var phi_3763_: f32;
+    var phi_3773_: type_19;
+    var phi_3774_: type_19;
+    var phi_3786_: f32;
+    var phi_3797_: type_19;
+    var phi_3849_: type_32;
+    var phi_3850_: type_19;
     var phi_3935_: u32;
-    var phi_3936_: u32;
-    var phi_5291_: bool;
-    var phi_3955_: u32;
-    var phi_3956_: u32;
-    var phi_5294_: bool;
-    var phi_3976_: u32;
-    var phi_3977_: u32;
-    var phi_5297_: bool;
-    var phi_4032_: u32;
-    var phi_4081_: u32;
-    var phi_4090_: bool;
-    var phi_4091_: u32;
-    var phi_4092_: bool;
-    var phi_4093_: u32;
-    var phi_4033_: u32;
-    var phi_5300_: bool;
-    var phi_4140_: type_17;
-    var phi_4142_: type_17;
-    var phi_4143_: bool;
-    var phi_4144_: type_17;
-    var phi_4145_: bool;
-    var phi_4150_: type_17;
-    var phi_4237_: u32;
-    var phi_4238_: u32;
-    var phi_5307_: bool;
-    var phi_4162_: u32;
-    var phi_4165_: u32;
-    var phi_4189_: u32;
-    var phi_4163_: u32;
-    var phi_4166_: u32;
-    var phi_5317_: bool;
-    var phi_4232_: u32;
-    var phi_5326_: bool;
-    var phi_4285_: u32;
-    var phi_5325_: bool;
-    var phi_4287_: u32;
-    var phi_4288_: u32;
-    var phi_5324_: bool;
-    var phi_758_: u32;
-    var phi_761_: u32;
-    var phi_4290_: bool;
+    var phi_3936_: f32;
+    var phi_3937_: f32;
+    var phi_3938_: bool;
     var phi_5323_: bool;
-    var phi_4351_: bool;
-    var phi_4353_: bool;
-    var phi_4354_: bool;
-    var phi_4511_: f32;
-    var phi_4576_: u32;
-    var phi_4579_: u32;
-    var phi_4581_: u32;
-    var phi_4654_: bool;
-    var phi_4656_: bool;
-    var phi_4657_: bool;
-    var phi_4672_: u32;
-    var phi_4673_: u32;
-    var phi_4674_: u32;
-    var phi_4675_: u32;
-    var phi_4577_: u32;
-    var phi_4580_: u32;
-    var phi_4582_: u32;
-    var phi_5328_: bool;
+    var phi_3939_: f32;
+    var phi_3940_: type_32;
+    var phi_3941_: u32;
+    var phi_3942_: f32;
+    var phi_3943_: f32;
+    var phi_3944_: bool;
+    var phi_3945_: array<f32, 3>;
+    var phi_5322_: bool;
+    var phi_2244_: f32;
+    var phi_2247_: type_32;
+    var phi_2249_: u32;
+    var phi_2251_: u32;
+    var phi_2253_: f32;
+    var phi_2255_: f32;
+    var phi_2257_: bool;
+    var phi_2259_: array<f32, 3>;
+    var phi_5321_: bool;
+    var phi_3949_: u32;
+    var phi_3950_: u32;
+    var phi_5397_: bool;
+    var phi_3970_: u32;
+    var phi_3971_: u32;
+    var phi_5400_: bool;
+    var phi_3991_: u32;
+    var phi_3992_: u32;
+    var phi_5403_: bool;
+    var phi_4011_: u32;
+    var phi_4012_: u32;
+    var phi_5406_: bool;
+    var phi_4032_: u32;
+    var phi_4033_: u32;
+    var phi_5409_: bool;
+    var phi_4088_: u32;
+    var phi_4137_: u32;
+    var phi_4146_: bool;
+    var phi_4147_: u32;
+    var phi_4148_: bool;
+    var phi_4149_: u32;
+    var phi_4089_: u32;
+    var phi_5412_: bool;
+    var phi_4196_: type_17;
+    var phi_4198_: type_17;
+    var phi_4199_: bool;
+    var phi_4200_: type_17;
+    var phi_4201_: bool;
+    var phi_4206_: type_17;
+    var phi_4349_: u32;
+    var phi_4350_: u32;
+    var phi_5419_: bool;
+    var phi_4218_: u32;
+    var phi_4221_: u32;
+    var phi_4245_: u32;
+    var phi_4219_: u32;
+    var phi_4222_: u32;
+    var phi_5429_: bool;
+    var phi_4316_: u32;
+    var phi_5438_: bool;
+    var phi_4397_: u32;
+    var phi_5437_: bool;
+    var phi_4399_: u32;
+    var phi_4400_: u32;
+    var phi_5436_: bool;
+    var phi_814_: u32;
+    var phi_817_: u32;
+    var phi_4402_: bool;
+    var phi_5435_: bool;
+    var phi_4463_: bool;
+    var phi_4465_: bool;
+    var phi_4466_: bool;
+    var phi_4623_: f32;
+    var phi_4688_: u32;
+    var phi_4691_: u32;
+    var phi_4693_: u32;
+    var phi_4766_: bool;
+    var phi_4768_: bool;
+    var phi_4769_: bool;
+    var phi_4784_: u32;
+    var phi_4785_: u32;
+    var phi_4786_: u32;
+    var phi_4787_: u32;
+    var phi_4689_: u32;
+    var phi_4692_: u32;
+    var phi_4694_: u32;
+    var phi_5440_: bool;
     var local_491: f32;
     var local_492: f32;
     var local_493: f32;
@@ -1098,7 +1098,7 @@ fn function_() {
                         let _e859 = local_7;
                         if (_e858 < _e859) {
                         } else {
-                            phi_4962_ = true;
+                            phi_5074_ = true;
                             break;
                         }
                         let _e861 = local_56;
@@ -1108,7 +1108,7 @@ fn function_() {
                         let _e867 = local_6;
                         if (_e866 < _e867) {
                         } else {
-                            phi_4962_ = true;
+                            phi_5074_ = true;
                             break;
                         }
                         let _e869 = local_57;
@@ -1134,11 +1134,11 @@ fn function_() {
                         let _e887 = local_55;
                         phi_367_ = _e884;
                         phi_370_ = _e886;
-                        phi_4962_ = false;
+                        phi_5074_ = false;
                         break if !(_e887);
                     }
                 }
-                let _e890 = phi_4962_;
+                let _e890 = phi_5074_;
                 if _e890 {
                     break;
                 }
@@ -1229,7 +1229,7 @@ fn function_() {
                                 local_69 = _e987;
                                 if (_e987 < 5888u) {
                                 } else {
-                                    phi_4978_ = true;
+                                    phi_5090_ = true;
                                     break;
                                 }
                                 let _e989 = local_69;
@@ -1252,7 +1252,7 @@ fn function_() {
                                     local_71 = _e1006;
                                     if (_e1006 < 5888u) {
                                     } else {
-                                        phi_4978_ = true;
+                                        phi_5090_ = true;
                                         break;
                                     }
                                     let _e1008 = local_71;
@@ -1279,11 +1279,11 @@ fn function_() {
                             let _e1023 = local_66;
                             phi_449_ = _e1020;
                             phi_452_ = _e1022;
-                            phi_4978_ = _e890;
+                            phi_5090_ = _e890;
                             break if !(_e1023);
                         }
                     }
-                    let _e1026 = phi_4978_;
+                    let _e1026 = phi_5090_;
                     if _e1026 {
                         break;
                     }
@@ -1305,20 +1305,20 @@ fn function_() {
                         }
                         let _e1044 = local_73;
                         let _e1046 = global_15[_e1044];
-                        phi_519_ = _e1046;
+                        phi_547_ = _e1046;
                     } else {
-                        phi_519_ = 0u;
+                        phi_547_ = 0u;
                     }
-                    let _e1048 = phi_519_;
+                    let _e1048 = phi_547_;
                     let _e1049 = subgroupMax(_e1048);
                     storageBarrier();
                     workgroupBarrier();
-                    phi_4987_ = _e1026;
-                    phi_572_ = _e1049;
+                    phi_5099_ = _e1026;
+                    phi_628_ = _e1049;
                 } else {
-                    phi_524_ = 128u;
+                    phi_580_ = 128u;
                     loop {
-                        let _e932 = phi_524_;
+                        let _e932 = phi_580_;
                         local_74 = _e932;
                         let _e933 = local_74;
                         let _e934 = (_e933 > 0u);
@@ -1330,7 +1330,7 @@ fn function_() {
                                 let _e938 = local_59;
                                 if _e938 {
                                 } else {
-                                    phi_4969_ = true;
+                                    phi_5081_ = true;
                                     break;
                                 }
                                 let _e939 = global_15[_e894];
@@ -1341,7 +1341,7 @@ fn function_() {
                                 local_77 = _e942;
                                 if (_e942 < 5888u) {
                                 } else {
-                                    phi_4969_ = true;
+                                    phi_5081_ = true;
                                     break;
                                 }
                                 let _e944 = local_77;
@@ -1352,7 +1352,7 @@ fn function_() {
                                 let _e951 = local_59;
                                 if _e951 {
                                 } else {
-                                    phi_4969_ = true;
+                                    phi_5081_ = true;
                                     break;
                                 }
                                 let _e952 = local_474;
@@ -1361,35 +1361,35 @@ fn function_() {
                             storageBarrier();
                             workgroupBarrier();
                             let _e953 = local_74;
-                            phi_525_ = (_e953 / 2u);
+                            phi_581_ = (_e953 / 2u);
                         } else {
-                            phi_525_ = u32();
+                            phi_581_ = u32();
                         }
-                        let _e956 = phi_525_;
+                        let _e956 = phi_581_;
                         continue;
                         continuing {
                             let _e957 = local_75;
-                            phi_524_ = _e956;
-                            phi_4969_ = _e890;
+                            phi_580_ = _e956;
+                            phi_5081_ = _e890;
                             break if !(_e957);
                         }
                     }
-                    let _e960 = phi_4969_;
+                    let _e960 = phi_5081_;
                     if _e960 {
                         break;
                     }
                     let _e962 = global_15[4352u];
                     storageBarrier();
                     workgroupBarrier();
-                    phi_4987_ = _e960;
-                    phi_572_ = _e962;
+                    phi_5099_ = _e960;
+                    phi_628_ = _e962;
                 }
-                let _e1051 = phi_4987_;
-                let _e1053 = phi_572_;
+                let _e1051 = phi_5099_;
+                let _e1053 = phi_628_;
                 local_78 = _e1053;
-                phi_574_ = 0u;
+                phi_630_ = 0u;
                 loop {
-                    let _e1055 = phi_574_;
+                    let _e1055 = phi_630_;
                     local_79 = _e1055;
                     let _e1056 = local_79;
                     let _e1057 = (_e1056 <= 1280u);
@@ -1401,26 +1401,26 @@ fn function_() {
                         local_81 = _e1060;
                         if (_e1060 < 5888u) {
                         } else {
-                            phi_4984_ = true;
+                            phi_5096_ = true;
                             break;
                         }
                         let _e1062 = local_81;
                         global_15[_e1062] = 0u;
                         let _e1064 = local_79;
-                        phi_575_ = (_e1064 + 256u);
+                        phi_631_ = (_e1064 + 256u);
                     } else {
-                        phi_575_ = u32();
+                        phi_631_ = u32();
                     }
-                    let _e1067 = phi_575_;
+                    let _e1067 = phi_631_;
                     continue;
                     continuing {
                         let _e1068 = local_80;
-                        phi_574_ = _e1067;
-                        phi_4984_ = _e1051;
+                        phi_630_ = _e1067;
+                        phi_5096_ = _e1051;
                         break if !(_e1068);
                     }
                 }
-                let _e1071 = phi_4984_;
+                let _e1071 = phi_5096_;
                 if _e1071 {
                     break;
                 }
@@ -1455,20 +1455,20 @@ fn function_() {
                     if _e1091 {
                         let _e1092 = local_83;
                         let _e1093 = local_18;
-                        phi_647_ = (_e1092 < _e1093);
+                        phi_703_ = (_e1092 < _e1093);
                     } else {
-                        phi_647_ = bool();
+                        phi_703_ = bool();
                     }
-                    let _e1096 = phi_647_;
+                    let _e1096 = phi_703_;
                     let _e1097 = local_86;
-                    phi_649_ = _e1096;
-                    phi_650_ = select(true, false, _e1097);
+                    phi_705_ = _e1096;
+                    phi_706_ = select(true, false, _e1097);
                 } else {
-                    phi_649_ = bool();
-                    phi_650_ = true;
+                    phi_705_ = bool();
+                    phi_706_ = true;
                 }
-                let _e1100 = phi_649_;
-                let _e1102 = phi_650_;
+                let _e1100 = phi_705_;
+                let _e1102 = phi_706_;
                 if select(_e1100, false, _e1102) {
                     let _e1104 = local_83;
                     let _e1105 = local_17;
@@ -1502,11 +1502,11 @@ fn function_() {
                     }
                     let _e1124 = local_88;
                     let _e1127 = global_8.member[_e1124];
-                    phi_695_ = bitcast<f32>(_e1127);
+                    phi_751_ = bitcast<f32>(_e1127);
                 } else {
-                    phi_695_ = _e601;
+                    phi_751_ = _e601;
                 }
-                let _e1130 = phi_695_;
+                let _e1130 = phi_751_;
                 local_89 = bitcast<u32>(_e1130);
                 let _e1132 = local;
                 let _e1133 = (1024u + _e1132);
@@ -1520,9 +1520,9 @@ fn function_() {
                 global_15[_e1135] = _e1137;
                 let _e1138 = local;
                 local_91 = (4608u + _e1138);
-                phi_706_ = 0u;
+                phi_762_ = 0u;
                 loop {
-                    let _e1141 = phi_706_;
+                    let _e1141 = phi_762_;
                     local_92 = _e1141;
                     let _e1142 = local_92;
                     let _e1143 = (_e1142 < 1u);
@@ -1534,7 +1534,7 @@ fn function_() {
                         local_94 = _e1146;
                         if (_e1146 < 5888u) {
                         } else {
-                            phi_4989_ = true;
+                            phi_5101_ = true;
                             break;
                         }
                         let _e1148 = local_94;
@@ -1545,7 +1545,7 @@ fn function_() {
                         local_95 = _e1153;
                         if (_e1153 < 5888u) {
                         } else {
-                            phi_4989_ = true;
+                            phi_5101_ = true;
                             break;
                         }
                         let _e1155 = local_95;
@@ -1556,7 +1556,7 @@ fn function_() {
                         local_96 = _e1160;
                         if (_e1160 < 5888u) {
                         } else {
-                            phi_4989_ = true;
+                            phi_5101_ = true;
                             break;
                         }
                         let _e1162 = local_96;
@@ -1567,38 +1567,38 @@ fn function_() {
                         local_97 = _e1167;
                         if (_e1167 < 5888u) {
                         } else {
-                            phi_4989_ = true;
+                            phi_5101_ = true;
                             break;
                         }
                         let _e1169 = local_97;
                         global_15[_e1169] = 1u;
                         let _e1171 = local_92;
-                        phi_707_ = (_e1171 + 1u);
+                        phi_763_ = (_e1171 + 1u);
                     } else {
-                        phi_707_ = u32();
+                        phi_763_ = u32();
                     }
-                    let _e1174 = phi_707_;
+                    let _e1174 = phi_763_;
                     continue;
                     continuing {
                         let _e1175 = local_93;
-                        phi_706_ = _e1174;
-                        phi_4989_ = _e1071;
+                        phi_762_ = _e1174;
+                        phi_5101_ = _e1071;
                         break if !(_e1175);
                     }
                 }
-                let _e1178 = phi_4989_;
+                let _e1178 = phi_5101_;
                 if _e1178 {
                     break;
                 }
                 storageBarrier();
                 workgroupBarrier();
-                phi_5021_ = _e1178;
-                phi_757_ = 0u;
-                phi_760_ = 1u;
+                phi_5131_ = _e1178;
+                phi_813_ = 0u;
+                phi_816_ = 1u;
                 loop {
-                    let _e1180 = phi_5021_;
-                    let _e1182 = phi_757_;
-                    let _e1184 = phi_760_;
+                    let _e1180 = phi_5131_;
+                    let _e1182 = phi_813_;
+                    let _e1184 = phi_816_;
                     local_98 = _e1182;
                     local_99 = _e1184;
                     let _e1185 = local_98;
@@ -1608,9 +1608,9 @@ fn function_() {
                         let _e1189 = (_e1188 == 0u);
                         local_100 = _e1189;
                         if _e1189 {
-                            phi_5325_ = _e1180;
-                            phi_4287_ = u32();
-                            phi_4288_ = u32();
+                            phi_5437_ = _e1180;
+                            phi_4399_ = u32();
+                            phi_4400_ = u32();
                         } else {
                             let _e1190 = local_98;
                             let _e1191 = local;
@@ -1625,7 +1625,7 @@ fn function_() {
                                 let _e1198 = local_7;
                                 if (_e1197 < _e1198) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1200 = local_102;
@@ -1636,7 +1636,7 @@ fn function_() {
                                 let _e1205 = local_6;
                                 if (_e1204 < _e1205) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1207 = local_104;
@@ -1648,7 +1648,7 @@ fn function_() {
                                 let _e1213 = local_6;
                                 if (_e1212 < _e1213) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1215 = local_106;
@@ -1660,7 +1660,7 @@ fn function_() {
                                 let _e1221 = local_6;
                                 if (_e1220 < _e1221) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1223 = local_108;
@@ -1672,7 +1672,7 @@ fn function_() {
                                 let _e1229 = local_6;
                                 if (_e1228 < _e1229) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1231 = local_110;
@@ -1688,27 +1688,27 @@ fn function_() {
                                 let _e1245 = (_e1243 >> bitcast<u32>(24i));
                                 local_115 = _e1245;
                                 if (_e1245 == 0u) {
-                                    phi_840_ = array<f32, 3>(0f, 0f, 0f);
+                                    phi_896_ = array<f32, 3>(0f, 0f, 0f);
                                 } else {
                                     let _e1247 = local_115;
                                     let _e1253 = bitcast<f32>((bitcast<u32>((bitcast<i32>(_e1247) + -13i)) << bitcast<u32>(23i)));
                                     let _e1254 = local_112;
                                     let _e1257 = local_113;
                                     let _e1260 = local_114;
-                                    phi_840_ = array<f32, 3>((f32(_e1254) * _e1253), (f32(_e1257) * _e1253), (f32(_e1260) * _e1253));
+                                    phi_896_ = array<f32, 3>((f32(_e1254) * _e1253), (f32(_e1257) * _e1253), (f32(_e1260) * _e1253));
                                 }
-                                let _e1265 = phi_840_;
+                                let _e1265 = phi_896_;
                                 local_116 = _e1265;
                                 let _e1266 = local_107;
                                 let _e1269 = ((_e1266 >> bitcast<u32>(14u)) & 1023u);
                                 local_117 = _e1269;
                                 if (_e1269 >= 1023u) {
-                                    phi_851_ = 1f;
+                                    phi_907_ = 1f;
                                 } else {
                                     let _e1271 = local_117;
-                                    phi_851_ = (f32(_e1271) * 0.0009775171f);
+                                    phi_907_ = (f32(_e1271) * 0.0009775171f);
                                 }
-                                let _e1275 = phi_851_;
+                                let _e1275 = phi_907_;
                                 local_118 = _e1275;
                                 let _e1276 = local_109;
                                 let _e1277 = bitcast<f32>(_e1276);
@@ -1725,34 +1725,34 @@ fn function_() {
                                 let _e1293 = ((_e1290 >> bitcast<u32>(8u)) & 7u);
                                 local_122 = _e1293;
                                 if (_e1293 == 0u) {
-                                    phi_929_ = type_30(_e1287, _e1288, _e1275, _e1277, _e1281, 0u);
+                                    phi_985_ = type_30(_e1287, _e1288, _e1275, _e1277, _e1281, 0u);
                                 } else {
                                     let _e1295 = local_122;
                                     let _e1296 = local_122;
                                     let _e1297 = (_e1295 * _e1296);
                                     local_123 = _e1297;
                                     if (_e1297 <= 1u) {
-                                        phi_877_ = 1u;
+                                        phi_933_ = 1u;
                                     } else {
                                         let _e1299 = local_123;
-                                        phi_877_ = select(16u, 4u, (_e1299 <= 4u));
+                                        phi_933_ = select(16u, 4u, (_e1299 <= 4u));
                                     }
-                                    let _e1303 = phi_877_;
+                                    let _e1303 = phi_933_;
                                     local_124 = _e1303;
                                     if (_e1303 == 0u) {
-                                        phi_5323_ = true;
+                                        phi_5435_ = true;
                                         break;
                                     }
                                     let _e1305 = local_124;
                                     local_125 = (32u / _e1305);
                                     let _e1307 = local_124;
                                     if (_e1307 >= 32u) {
-                                        phi_890_ = 4294967295u;
+                                        phi_946_ = 4294967295u;
                                     } else {
                                         let _e1309 = local_124;
-                                        phi_890_ = ((1u << bitcast<u32>((_e1309 & 31u))) - 1u);
+                                        phi_946_ = ((1u << bitcast<u32>((_e1309 & 31u))) - 1u);
                                     }
-                                    let _e1315 = phi_890_;
+                                    let _e1315 = phi_946_;
                                     local_126 = _e1315;
                                     let _e1316 = local_22;
                                     let _e1317 = local_23;
@@ -1764,7 +1764,7 @@ fn function_() {
                                     let _e1327 = (_e1326 == 0u);
                                     local_128 = _e1327;
                                     if _e1327 {
-                                        phi_5323_ = true;
+                                        phi_5435_ = true;
                                         break;
                                     }
                                     let _e1328 = local_103;
@@ -1773,7 +1773,7 @@ fn function_() {
                                     local_129 = (_e1331 + (_e1328 / _e1329));
                                     let _e1333 = local_128;
                                     if _e1333 {
-                                        phi_5323_ = true;
+                                        phi_5435_ = true;
                                         break;
                                     }
                                     let _e1334 = local_103;
@@ -1784,7 +1784,7 @@ fn function_() {
                                     let _e1340 = local_6;
                                     if (_e1339 < _e1340) {
                                     } else {
-                                        phi_5323_ = true;
+                                        phi_5435_ = true;
                                         break;
                                     }
                                     let _e1342 = local_129;
@@ -1796,20 +1796,20 @@ fn function_() {
                                     let _e1354 = local_118;
                                     let _e1355 = local_119;
                                     let _e1356 = local_120;
-                                    phi_929_ = type_30(_e1352, _e1353, _e1354, _e1355, _e1356, ((_e1345 >> bitcast<u32>((_e1346 & 31u))) & _e1350));
+                                    phi_985_ = type_30(_e1352, _e1353, _e1354, _e1355, _e1356, ((_e1345 >> bitcast<u32>((_e1346 & 31u))) & _e1350));
                                 }
-                                let _e1359 = phi_929_;
+                                let _e1359 = phi_985_;
                                 local_131 = _e1359;
                                 local_132 = _e1359.member_5;
                                 let _e1361 = (_e1359.member_5 != 0u);
                                 local_133 = _e1361;
                                 if _e1361 {
-                                    phi_943_ = 1.4142135f;
+                                    phi_999_ = 1.4142135f;
                                 } else {
                                     let _e1362 = local_131;
-                                    phi_943_ = (0.5f * f32((1u << bitcast<u32>((_e1362.member_4 & 31u)))));
+                                    phi_999_ = (0.5f * f32((1u << bitcast<u32>((_e1362.member_4 & 31u)))));
                                 }
-                                let _e1370 = phi_943_;
+                                let _e1370 = phi_999_;
                                 local_134 = _e1370;
                                 let _e1371 = local_131;
                                 local_135 = _e1371.member_3;
@@ -1821,16 +1821,16 @@ fn function_() {
                                     let _e1412 = local_27;
                                     let _e1413 = local_25;
                                     let _e1416 = local_28;
-                                    phi_1009_ = (0.5f * ((((2f * _e1408) * _e1410) / (_e1412 - _e1413)) * _e1416));
+                                    phi_1065_ = (0.5f * ((((2f * _e1408) * _e1410) / (_e1412 - _e1413)) * _e1416));
                                 } else {
                                     let _e1375 = local_136;
                                     if (_e1375 == 0u) {
-                                        phi_972_ = false;
+                                        phi_1028_ = false;
                                     } else {
                                         let _e1377 = local_136;
-                                        phi_972_ = (_e1377 <= 2139095040u);
+                                        phi_1028_ = (_e1377 <= 2139095040u);
                                     }
-                                    let _e1380 = phi_972_;
+                                    let _e1380 = phi_1028_;
                                     if _e1380 {
                                         let _e1381 = local_26;
                                         let _e1383 = local_25;
@@ -1840,30 +1840,30 @@ fn function_() {
                                         let _e1390 = ((((2f * _e1381) * _e1383) / (_e1385 - _e1386)) * _e1389);
                                         local_137 = _e1390;
                                         if (_e1390 == 0f) {
-                                            phi_1000_ = 0f;
+                                            phi_1056_ = 0f;
                                         } else {
                                             let _e1392 = local_27;
                                             let _e1393 = local_135;
                                             let _e1396 = local_137;
-                                            phi_1000_ = (_e1396 * (1f - (_e1392 / _e1393)));
+                                            phi_1056_ = (_e1396 * (1f - (_e1392 / _e1393)));
                                         }
-                                        let _e1399 = phi_1000_;
-                                        phi_1001_ = _e1399;
+                                        let _e1399 = phi_1056_;
+                                        phi_1057_ = _e1399;
                                     } else {
-                                        phi_1001_ = _e601;
+                                        phi_1057_ = _e601;
                                     }
-                                    let _e1401 = phi_1001_;
+                                    let _e1401 = phi_1057_;
                                     local_138 = _e1401;
                                     if (_e1401 < 0f) {
                                         let _e1403 = local_138;
-                                        phi_1007_ = -(_e1403);
+                                        phi_1063_ = -(_e1403);
                                     } else {
-                                        phi_1007_ = _e1401;
+                                        phi_1063_ = _e1401;
                                     }
-                                    let _e1406 = phi_1007_;
-                                    phi_1009_ = (0.5f * _e1406);
+                                    let _e1406 = phi_1063_;
+                                    phi_1065_ = (0.5f * _e1406);
                                 }
-                                let _e1420 = phi_1009_;
+                                let _e1420 = phi_1065_;
                                 let _e1425 = local_134;
                                 let _e1426 = (select(_e1420, 0f, ((bitcast<u32>(_e1420) & 2147483647u) > 2139095040u)) + _e1425);
                                 let _e1427 = local_16;
@@ -1881,7 +1881,7 @@ fn function_() {
                                 local_142 = _e1445;
                                 if (_e1445 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1447 = local_142;
@@ -1894,7 +1894,7 @@ fn function_() {
                                 local_144 = _e1453;
                                 if (_e1453 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1455 = local_144;
@@ -1907,7 +1907,7 @@ fn function_() {
                                 local_146 = _e1461;
                                 if (_e1461 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e1463 = local_146;
@@ -1918,8 +1918,8 @@ fn function_() {
                                 local_476 = select(1f, -1f, (_e1466 < _e1467));
                                 let _e1470 = local_133;
                                 if _e1470 {
-                                    phi_5084_ = _e1180;
-                                    phi_1634_ = 1f;
+                                    phi_5188_ = _e1180;
+                                    phi_1690_ = 1f;
                                 } else {
                                     let _e1471 = local_131;
                                     local_147 = f32((1u << bitcast<u32>(((2u * _e1471.member_4) & 31u))));
@@ -1933,7 +1933,7 @@ fn function_() {
                                             let _e2026 = local_475;
                                             let _e2027 = (_e2026 - (0.5f * _e2024));
                                             let _e2028 = local_35;
-                                            phi_1109_ = ((_e2028 * _e2027) * _e2027);
+                                            phi_1165_ = ((_e2028 * _e2027) * _e2027);
                                         } else {
                                             let _e2012 = local_475;
                                             let _e2013 = local_148;
@@ -1941,11 +1941,11 @@ fn function_() {
                                             let _e2017 = local_148;
                                             let _e2018 = local_148;
                                             let _e2022 = local_35;
-                                            phi_1109_ = (_e2022 * (((_e2012 - _e2013) * _e2015) + ((_e2017 * _e2018) * 0.33333334f)));
+                                            phi_1165_ = (_e2022 * (((_e2012 - _e2013) * _e2015) + ((_e2017 * _e2018) * 0.33333334f)));
                                         }
-                                        let _e2032 = phi_1109_;
-                                        phi_5085_ = _e1180;
-                                        phi_1632_ = _e2032;
+                                        let _e2032 = phi_1165_;
+                                        phi_5189_ = _e1180;
+                                        phi_1688_ = _e2032;
                                     } else {
                                         let _e1485 = local_140;
                                         let _e1486 = local_475;
@@ -1957,13 +1957,13 @@ fn function_() {
                                         let _e1500 = local_139;
                                         let _e1501 = local_475;
                                         local_150 = floor(((_e1500 + _e1501) - 0.5f));
-                                        phi_5011_ = _e1180;
-                                        phi_1124_ = ceil(((_e1485 - _e1486) - 0.5f));
-                                        phi_1127_ = 0f;
+                                        phi_5115_ = _e1180;
+                                        phi_1180_ = ceil(((_e1485 - _e1486) - 0.5f));
+                                        phi_1183_ = 0f;
                                         loop {
-                                            let _e1506 = phi_5011_;
-                                            let _e1508 = phi_1124_;
-                                            let _e1510 = phi_1127_;
+                                            let _e1506 = phi_5115_;
+                                            let _e1508 = phi_1180_;
+                                            let _e1510 = phi_1183_;
                                             local_151 = _e1508;
                                             local_493 = _e1510;
                                             let _e1511 = local_151;
@@ -1974,11 +1974,11 @@ fn function_() {
                                                 let _e1514 = local_151;
                                                 let _e1516 = local_140;
                                                 local_153 = ((_e1514 + 0.5f) - _e1516);
-                                                phi_1138_ = ceil(((_e1495 - _e1496) - 0.5f));
-                                                phi_1141_ = _e1510;
+                                                phi_1194_ = ceil(((_e1495 - _e1496) - 0.5f));
+                                                phi_1197_ = _e1510;
                                                 loop {
-                                                    let _e1519 = phi_1138_;
-                                                    let _e1521 = phi_1141_;
+                                                    let _e1519 = phi_1194_;
+                                                    let _e1521 = phi_1197_;
                                                     local_154 = _e1519;
                                                     local_492 = _e1521;
                                                     let _e1522 = local_154;
@@ -1998,11 +1998,11 @@ fn function_() {
                                                         local_158 = _e1535;
                                                         if _e1535 {
                                                             let _e1536 = local_36;
-                                                            phi_1165_ = (_e1536 == 0u);
+                                                            phi_1221_ = (_e1536 == 0u);
                                                         } else {
-                                                            phi_1165_ = false;
+                                                            phi_1221_ = false;
                                                         }
-                                                        let _e1539 = phi_1165_;
+                                                        let _e1539 = phi_1221_;
                                                         if _e1539 {
                                                             let _e1947 = local_475;
                                                             let _e1948 = local_148;
@@ -2012,16 +2012,16 @@ fn function_() {
                                                             let _e1957 = local_475;
                                                             let _e1959 = local_148;
                                                             let _e1961 = ((_e1957 - sqrt(_e1955)) * (1f / _e1959));
-                                                            phi_1610_ = select(select(0f, select(1f, _e1961, (_e1961 < 1f)), (0f < _e1961)), 1f, ((0f < _e1949) && (_e1952 <= (_e1949 * _e1949))));
+                                                            phi_1666_ = select(select(0f, select(1f, _e1961, (_e1961 < 1f)), (0f < _e1961)), 1f, ((0f < _e1949) && (_e1952 <= (_e1949 * _e1949))));
                                                         } else {
                                                             let _e1540 = local_158;
                                                             if _e1540 {
                                                                 let _e1541 = local_36;
-                                                                phi_1201_ = (_e1541 == 0u);
+                                                                phi_1257_ = (_e1541 == 0u);
                                                             } else {
-                                                                phi_1201_ = false;
+                                                                phi_1257_ = false;
                                                             }
-                                                            let _e1544 = phi_1201_;
+                                                            let _e1544 = phi_1257_;
                                                             if _e1544 {
                                                                 let _e1925 = local_475;
                                                                 let _e1926 = local_148;
@@ -2031,7 +2031,7 @@ fn function_() {
                                                                 let _e1935 = local_475;
                                                                 let _e1937 = local_148;
                                                                 let _e1939 = ((_e1935 - sqrt(_e1933)) * (1f / _e1937));
-                                                                phi_1609_ = select(select(0f, select(1f, _e1939, (_e1939 < 1f)), (0f < _e1939)), 1f, ((0f < _e1927) && (_e1930 <= (_e1927 * _e1927))));
+                                                                phi_1665_ = select(select(0f, select(1f, _e1939, (_e1939 < 1f)), (0f < _e1939)), 1f, ((0f < _e1927) && (_e1930 <= (_e1927 * _e1927))));
                                                             } else {
                                                                 let _e1545 = local_476;
                                                                 let _e1546 = local_156;
@@ -2080,25 +2080,25 @@ fn function_() {
                                                                                         let _e1672 = (_e1665 < 0f);
                                                                                         local_170 = _e1672;
                                                                                         if _e1672 {
-                                                                                            phi_1322_ = f32();
-                                                                                            phi_1323_ = true;
+                                                                                            phi_1378_ = f32();
+                                                                                            phi_1379_ = true;
                                                                                         } else {
                                                                                             let _e1673 = local_167;
                                                                                             if (_e1673 < 0f) {
-                                                                                                phi_1320_ = f32();
-                                                                                                phi_1321_ = true;
+                                                                                                phi_1376_ = f32();
+                                                                                                phi_1377_ = true;
                                                                                             } else {
                                                                                                 let _e1675 = local_166;
                                                                                                 let _e1676 = local_162;
                                                                                                 if (_e1675 >= _e1676) {
-                                                                                                    phi_1318_ = f32();
-                                                                                                    phi_1319_ = true;
+                                                                                                    phi_1374_ = f32();
+                                                                                                    phi_1375_ = true;
                                                                                                 } else {
                                                                                                     let _e1678 = local_167;
                                                                                                     let _e1679 = local_162;
                                                                                                     let _e1680 = (_e1678 >= _e1679);
                                                                                                     if _e1680 {
-                                                                                                        phi_1317_ = f32();
+                                                                                                        phi_1373_ = f32();
                                                                                                     } else {
                                                                                                         let _e1681 = local_167;
                                                                                                         let _e1683 = local_167;
@@ -2112,29 +2112,29 @@ fn function_() {
                                                                                                         let _e1702 = local_12;
                                                                                                         if (_e1701 < _e1702) {
                                                                                                         } else {
-                                                                                                            phi_5000_ = true;
+                                                                                                            phi_5112_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1704 = local_171;
                                                                                                         let _e1707 = global_14.member[_e1704];
-                                                                                                        phi_1317_ = bitcast<f32>(_e1707);
+                                                                                                        phi_1373_ = bitcast<f32>(_e1707);
                                                                                                     }
-                                                                                                    let _e1710 = phi_1317_;
-                                                                                                    phi_1318_ = _e1710;
-                                                                                                    phi_1319_ = _e1680;
+                                                                                                    let _e1710 = phi_1373_;
+                                                                                                    phi_1374_ = _e1710;
+                                                                                                    phi_1375_ = _e1680;
                                                                                                 }
-                                                                                                let _e1712 = phi_1318_;
-                                                                                                let _e1714 = phi_1319_;
-                                                                                                phi_1320_ = _e1712;
-                                                                                                phi_1321_ = _e1714;
+                                                                                                let _e1712 = phi_1374_;
+                                                                                                let _e1714 = phi_1375_;
+                                                                                                phi_1376_ = _e1712;
+                                                                                                phi_1377_ = _e1714;
                                                                                             }
-                                                                                            let _e1716 = phi_1320_;
-                                                                                            let _e1718 = phi_1321_;
-                                                                                            phi_1322_ = _e1716;
-                                                                                            phi_1323_ = _e1718;
+                                                                                            let _e1716 = phi_1376_;
+                                                                                            let _e1718 = phi_1377_;
+                                                                                            phi_1378_ = _e1716;
+                                                                                            phi_1379_ = _e1718;
                                                                                         }
-                                                                                        let _e1720 = phi_1322_;
-                                                                                        let _e1722 = phi_1323_;
+                                                                                        let _e1720 = phi_1378_;
+                                                                                        let _e1722 = phi_1379_;
                                                                                         let _e1724 = local_168;
                                                                                         let _e1725 = (1f - _e1724);
                                                                                         local_172 = _e1725;
@@ -2145,25 +2145,25 @@ fn function_() {
                                                                                         let _e1729 = (_e1728 < 0f);
                                                                                         local_175 = _e1729;
                                                                                         if _e1729 {
-                                                                                            phi_1378_ = f32();
-                                                                                            phi_1379_ = true;
+                                                                                            phi_1434_ = f32();
+                                                                                            phi_1435_ = true;
                                                                                         } else {
                                                                                             let _e1730 = local_167;
                                                                                             if (_e1730 < 0f) {
-                                                                                                phi_1376_ = f32();
-                                                                                                phi_1377_ = true;
+                                                                                                phi_1432_ = f32();
+                                                                                                phi_1433_ = true;
                                                                                             } else {
                                                                                                 let _e1732 = local_174;
                                                                                                 let _e1733 = local_162;
                                                                                                 if (_e1732 >= _e1733) {
-                                                                                                    phi_1374_ = f32();
-                                                                                                    phi_1375_ = true;
+                                                                                                    phi_1430_ = f32();
+                                                                                                    phi_1431_ = true;
                                                                                                 } else {
                                                                                                     let _e1735 = local_167;
                                                                                                     let _e1736 = local_162;
                                                                                                     let _e1737 = (_e1735 >= _e1736);
                                                                                                     if _e1737 {
-                                                                                                        phi_1373_ = f32();
+                                                                                                        phi_1429_ = f32();
                                                                                                     } else {
                                                                                                         let _e1738 = local_167;
                                                                                                         let _e1740 = local_167;
@@ -2177,29 +2177,29 @@ fn function_() {
                                                                                                         let _e1759 = local_12;
                                                                                                         if (_e1758 < _e1759) {
                                                                                                         } else {
-                                                                                                            phi_5000_ = true;
+                                                                                                            phi_5112_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1761 = local_176;
                                                                                                         let _e1764 = global_14.member[_e1761];
-                                                                                                        phi_1373_ = bitcast<f32>(_e1764);
+                                                                                                        phi_1429_ = bitcast<f32>(_e1764);
                                                                                                     }
-                                                                                                    let _e1767 = phi_1373_;
-                                                                                                    phi_1374_ = _e1767;
-                                                                                                    phi_1375_ = _e1737;
+                                                                                                    let _e1767 = phi_1429_;
+                                                                                                    phi_1430_ = _e1767;
+                                                                                                    phi_1431_ = _e1737;
                                                                                                 }
-                                                                                                let _e1769 = phi_1374_;
-                                                                                                let _e1771 = phi_1375_;
-                                                                                                phi_1376_ = _e1769;
-                                                                                                phi_1377_ = _e1771;
+                                                                                                let _e1769 = phi_1430_;
+                                                                                                let _e1771 = phi_1431_;
+                                                                                                phi_1432_ = _e1769;
+                                                                                                phi_1433_ = _e1771;
                                                                                             }
-                                                                                            let _e1773 = phi_1376_;
-                                                                                            let _e1775 = phi_1377_;
-                                                                                            phi_1378_ = _e1773;
-                                                                                            phi_1379_ = _e1775;
+                                                                                            let _e1773 = phi_1432_;
+                                                                                            let _e1775 = phi_1433_;
+                                                                                            phi_1434_ = _e1773;
+                                                                                            phi_1435_ = _e1775;
                                                                                         }
-                                                                                        let _e1777 = phi_1378_;
-                                                                                        let _e1779 = phi_1379_;
+                                                                                        let _e1777 = phi_1434_;
+                                                                                        let _e1779 = phi_1435_;
                                                                                         let _e1781 = local_168;
                                                                                         let _e1783 = local_173;
                                                                                         local_177 = (_e1783 + (select(_e1777, 0f, _e1779) * _e1781));
@@ -2207,25 +2207,25 @@ fn function_() {
                                                                                         local_178 = (_e1785 + 1f);
                                                                                         let _e1787 = local_170;
                                                                                         if _e1787 {
-                                                                                            phi_1434_ = f32();
-                                                                                            phi_1435_ = true;
+                                                                                            phi_1490_ = f32();
+                                                                                            phi_1491_ = true;
                                                                                         } else {
                                                                                             let _e1788 = local_178;
                                                                                             if (_e1788 < 0f) {
-                                                                                                phi_1432_ = f32();
-                                                                                                phi_1433_ = true;
+                                                                                                phi_1488_ = f32();
+                                                                                                phi_1489_ = true;
                                                                                             } else {
                                                                                                 let _e1790 = local_166;
                                                                                                 let _e1791 = local_162;
                                                                                                 if (_e1790 >= _e1791) {
-                                                                                                    phi_1430_ = f32();
-                                                                                                    phi_1431_ = true;
+                                                                                                    phi_1486_ = f32();
+                                                                                                    phi_1487_ = true;
                                                                                                 } else {
                                                                                                     let _e1793 = local_178;
                                                                                                     let _e1794 = local_162;
                                                                                                     let _e1795 = (_e1793 >= _e1794);
                                                                                                     if _e1795 {
-                                                                                                        phi_1429_ = f32();
+                                                                                                        phi_1485_ = f32();
                                                                                                     } else {
                                                                                                         let _e1796 = local_178;
                                                                                                         let _e1798 = local_178;
@@ -2239,52 +2239,52 @@ fn function_() {
                                                                                                         let _e1817 = local_12;
                                                                                                         if (_e1816 < _e1817) {
                                                                                                         } else {
-                                                                                                            phi_5000_ = true;
+                                                                                                            phi_5112_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1819 = local_179;
                                                                                                         let _e1822 = global_14.member[_e1819];
-                                                                                                        phi_1429_ = bitcast<f32>(_e1822);
+                                                                                                        phi_1485_ = bitcast<f32>(_e1822);
                                                                                                     }
-                                                                                                    let _e1825 = phi_1429_;
-                                                                                                    phi_1430_ = _e1825;
-                                                                                                    phi_1431_ = _e1795;
+                                                                                                    let _e1825 = phi_1485_;
+                                                                                                    phi_1486_ = _e1825;
+                                                                                                    phi_1487_ = _e1795;
                                                                                                 }
-                                                                                                let _e1827 = phi_1430_;
-                                                                                                let _e1829 = phi_1431_;
-                                                                                                phi_1432_ = _e1827;
-                                                                                                phi_1433_ = _e1829;
+                                                                                                let _e1827 = phi_1486_;
+                                                                                                let _e1829 = phi_1487_;
+                                                                                                phi_1488_ = _e1827;
+                                                                                                phi_1489_ = _e1829;
                                                                                             }
-                                                                                            let _e1831 = phi_1432_;
-                                                                                            let _e1833 = phi_1433_;
-                                                                                            phi_1434_ = _e1831;
-                                                                                            phi_1435_ = _e1833;
+                                                                                            let _e1831 = phi_1488_;
+                                                                                            let _e1833 = phi_1489_;
+                                                                                            phi_1490_ = _e1831;
+                                                                                            phi_1491_ = _e1833;
                                                                                         }
-                                                                                        let _e1835 = phi_1434_;
-                                                                                        let _e1837 = phi_1435_;
+                                                                                        let _e1835 = phi_1490_;
+                                                                                        let _e1837 = phi_1491_;
                                                                                         let _e1839 = local_172;
                                                                                         local_180 = (select(_e1835, 0f, _e1837) * _e1839);
                                                                                         let _e1841 = local_175;
                                                                                         if _e1841 {
-                                                                                            phi_1491_ = f32();
-                                                                                            phi_1492_ = true;
+                                                                                            phi_1547_ = f32();
+                                                                                            phi_1548_ = true;
                                                                                         } else {
                                                                                             let _e1842 = local_178;
                                                                                             if (_e1842 < 0f) {
-                                                                                                phi_1489_ = f32();
-                                                                                                phi_1490_ = true;
+                                                                                                phi_1545_ = f32();
+                                                                                                phi_1546_ = true;
                                                                                             } else {
                                                                                                 let _e1844 = local_174;
                                                                                                 let _e1845 = local_162;
                                                                                                 if (_e1844 >= _e1845) {
-                                                                                                    phi_1487_ = f32();
-                                                                                                    phi_1488_ = true;
+                                                                                                    phi_1543_ = f32();
+                                                                                                    phi_1544_ = true;
                                                                                                 } else {
                                                                                                     let _e1847 = local_178;
                                                                                                     let _e1848 = local_162;
                                                                                                     let _e1849 = (_e1847 >= _e1848);
                                                                                                     if _e1849 {
-                                                                                                        phi_1486_ = f32();
+                                                                                                        phi_1542_ = f32();
                                                                                                     } else {
                                                                                                         let _e1850 = local_178;
                                                                                                         let _e1852 = local_178;
@@ -2298,70 +2298,70 @@ fn function_() {
                                                                                                         let _e1871 = local_12;
                                                                                                         if (_e1870 < _e1871) {
                                                                                                         } else {
-                                                                                                            phi_5000_ = true;
+                                                                                                            phi_5112_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e1873 = local_181;
                                                                                                         let _e1876 = global_14.member[_e1873];
-                                                                                                        phi_1486_ = bitcast<f32>(_e1876);
+                                                                                                        phi_1542_ = bitcast<f32>(_e1876);
                                                                                                     }
-                                                                                                    let _e1879 = phi_1486_;
-                                                                                                    phi_1487_ = _e1879;
-                                                                                                    phi_1488_ = _e1849;
+                                                                                                    let _e1879 = phi_1542_;
+                                                                                                    phi_1543_ = _e1879;
+                                                                                                    phi_1544_ = _e1849;
                                                                                                 }
-                                                                                                let _e1881 = phi_1487_;
-                                                                                                let _e1883 = phi_1488_;
-                                                                                                phi_1489_ = _e1881;
-                                                                                                phi_1490_ = _e1883;
+                                                                                                let _e1881 = phi_1543_;
+                                                                                                let _e1883 = phi_1544_;
+                                                                                                phi_1545_ = _e1881;
+                                                                                                phi_1546_ = _e1883;
                                                                                             }
-                                                                                            let _e1885 = phi_1489_;
-                                                                                            let _e1887 = phi_1490_;
-                                                                                            phi_1491_ = _e1885;
-                                                                                            phi_1492_ = _e1887;
+                                                                                            let _e1885 = phi_1545_;
+                                                                                            let _e1887 = phi_1546_;
+                                                                                            phi_1547_ = _e1885;
+                                                                                            phi_1548_ = _e1887;
                                                                                         }
-                                                                                        let _e1889 = phi_1491_;
-                                                                                        let _e1891 = phi_1492_;
+                                                                                        let _e1889 = phi_1547_;
+                                                                                        let _e1891 = phi_1548_;
                                                                                         let _e1893 = local_168;
                                                                                         let _e1895 = local_180;
                                                                                         let _e1897 = local_169;
                                                                                         let _e1899 = local_177;
                                                                                         let _e1901 = local_169;
-                                                                                        phi_1503_ = ((_e1899 * (1f - _e1897)) + ((_e1895 + (select(_e1889, 0f, _e1891) * _e1893)) * _e1901));
+                                                                                        phi_1559_ = ((_e1899 * (1f - _e1897)) + ((_e1895 + (select(_e1889, 0f, _e1891) * _e1893)) * _e1901));
                                                                                     } else {
-                                                                                        phi_1503_ = f32();
+                                                                                        phi_1559_ = f32();
                                                                                     }
-                                                                                    let _e1905 = phi_1503_;
+                                                                                    let _e1905 = phi_1559_;
                                                                                     let _e1906 = local_165;
-                                                                                    phi_1505_ = _e1905;
-                                                                                    phi_1506_ = select(true, false, _e1906);
+                                                                                    phi_1561_ = _e1905;
+                                                                                    phi_1562_ = select(true, false, _e1906);
                                                                                 } else {
-                                                                                    phi_1505_ = f32();
-                                                                                    phi_1506_ = true;
+                                                                                    phi_1561_ = f32();
+                                                                                    phi_1562_ = true;
                                                                                 }
-                                                                                let _e1909 = phi_1505_;
-                                                                                let _e1911 = phi_1506_;
-                                                                                phi_1507_ = _e1909;
-                                                                                phi_1508_ = _e1911;
+                                                                                let _e1909 = phi_1561_;
+                                                                                let _e1911 = phi_1562_;
+                                                                                phi_1563_ = _e1909;
+                                                                                phi_1564_ = _e1911;
                                                                             } else {
-                                                                                phi_1507_ = f32();
-                                                                                phi_1508_ = true;
+                                                                                phi_1563_ = f32();
+                                                                                phi_1564_ = true;
                                                                             }
-                                                                            let _e1913 = phi_1507_;
-                                                                            let _e1915 = phi_1508_;
-                                                                            phi_1509_ = _e1913;
-                                                                            phi_1510_ = _e1915;
+                                                                            let _e1913 = phi_1563_;
+                                                                            let _e1915 = phi_1564_;
+                                                                            phi_1565_ = _e1913;
+                                                                            phi_1566_ = _e1915;
                                                                         } else {
-                                                                            phi_1509_ = f32();
-                                                                            phi_1510_ = true;
+                                                                            phi_1565_ = f32();
+                                                                            phi_1566_ = true;
                                                                         }
-                                                                        let _e1917 = phi_1509_;
-                                                                        let _e1919 = phi_1510_;
-                                                                        phi_1515_ = select(_e1917, 0f, _e1919);
+                                                                        let _e1917 = phi_1565_;
+                                                                        let _e1919 = phi_1566_;
+                                                                        phi_1571_ = select(_e1917, 0f, _e1919);
                                                                     } else {
-                                                                        phi_1515_ = 0f;
+                                                                        phi_1571_ = 0f;
                                                                     }
-                                                                    let _e1922 = phi_1515_;
-                                                                    phi_1608_ = _e1922;
+                                                                    let _e1922 = phi_1571_;
+                                                                    phi_1664_ = _e1922;
                                                                 } else {
                                                                     let _e1553 = local_159;
                                                                     let _e1554 = local_159;
@@ -2371,19 +2371,19 @@ fn function_() {
                                                                     local_182 = _e1560;
                                                                     let _e1561 = local_158;
                                                                     if _e1561 {
-                                                                        phi_1595_ = _e1560;
+                                                                        phi_1651_ = _e1560;
                                                                     } else {
                                                                         let _e1562 = local_31;
                                                                         let _e1564 = local_159;
                                                                         let _e1566 = local_31;
                                                                         let _e1568 = local_160;
-                                                                        phi_1537_ = 1u;
-                                                                        phi_1540_ = ((_e1564 * _e1562[0]) + (_e1568 * _e1566[1]));
-                                                                        phi_1542_ = _e658.member_16.member_2;
+                                                                        phi_1593_ = 1u;
+                                                                        phi_1596_ = ((_e1564 * _e1562[0]) + (_e1568 * _e1566[1]));
+                                                                        phi_1598_ = _e658.member_16.member_2;
                                                                         loop {
-                                                                            let _e1572 = phi_1537_;
-                                                                            let _e1574 = phi_1540_;
-                                                                            let _e1576 = phi_1542_;
+                                                                            let _e1572 = phi_1593_;
+                                                                            let _e1574 = phi_1596_;
+                                                                            let _e1576 = phi_1598_;
                                                                             local_183 = _e1572;
                                                                             local_184 = _e1574;
                                                                             local_185 = _e1576;
@@ -2406,23 +2406,23 @@ fn function_() {
                                                                                 let _e1600 = local_184;
                                                                                 let _e1602 = local_184;
                                                                                 let _e1604 = local_183;
-                                                                                phi_1538_ = (_e1604 + 1u);
-                                                                                phi_1541_ = select(_e1602, _e1599, (_e1599 > _e1600));
-                                                                                phi_1543_ = array<f32, 2>(_e1588, _e1593);
+                                                                                phi_1594_ = (_e1604 + 1u);
+                                                                                phi_1597_ = select(_e1602, _e1599, (_e1599 > _e1600));
+                                                                                phi_1599_ = array<f32, 2>(_e1588, _e1593);
                                                                             } else {
-                                                                                phi_1538_ = u32();
-                                                                                phi_1541_ = f32();
-                                                                                phi_1543_ = array<f32, 2>();
+                                                                                phi_1594_ = u32();
+                                                                                phi_1597_ = f32();
+                                                                                phi_1599_ = array<f32, 2>();
                                                                             }
-                                                                            let _e1607 = phi_1538_;
-                                                                            let _e1609 = phi_1541_;
-                                                                            let _e1611 = phi_1543_;
+                                                                            let _e1607 = phi_1594_;
+                                                                            let _e1609 = phi_1597_;
+                                                                            let _e1611 = phi_1599_;
                                                                             continue;
                                                                             continuing {
                                                                                 let _e1612 = local_186;
-                                                                                phi_1537_ = _e1607;
-                                                                                phi_1540_ = _e1609;
-                                                                                phi_1542_ = _e1611;
+                                                                                phi_1593_ = _e1607;
+                                                                                phi_1596_ = _e1609;
+                                                                                phi_1598_ = _e1611;
                                                                                 break if !(_e1612);
                                                                             }
                                                                         }
@@ -2431,28 +2431,28 @@ fn function_() {
                                                                         let _e1618 = local_34;
                                                                         let _e1620 = local_30;
                                                                         let _e1621 = local_182;
-                                                                        phi_1595_ = ((((1f - _e1614) * _e1616) * _e1618) + (_e1620 * _e1621));
+                                                                        phi_1651_ = ((((1f - _e1614) * _e1616) * _e1618) + (_e1620 * _e1621));
                                                                     }
-                                                                    let _e1625 = phi_1595_;
+                                                                    let _e1625 = phi_1651_;
                                                                     let _e1626 = local_475;
                                                                     let _e1628 = local_148;
                                                                     let _e1629 = ((_e1626 - _e1625) / _e1628);
-                                                                    phi_1608_ = select(0f, select(1f, _e1629, (_e1629 < 1f)), (0f < _e1629));
+                                                                    phi_1664_ = select(0f, select(1f, _e1629, (_e1629 < 1f)), (0f < _e1629));
                                                                 }
-                                                                let _e1924 = phi_1608_;
-                                                                phi_1609_ = _e1924;
+                                                                let _e1924 = phi_1664_;
+                                                                phi_1665_ = _e1924;
                                                             }
-                                                            let _e1946 = phi_1609_;
-                                                            phi_1610_ = _e1946;
+                                                            let _e1946 = phi_1665_;
+                                                            phi_1666_ = _e1946;
                                                         }
-                                                        let _e1968 = phi_1610_;
+                                                        let _e1968 = phi_1666_;
                                                         let _e1969 = local_155;
                                                         local_477 = select(0f, _e1968, _e1969);
-                                                        phi_1616_ = 0u;
-                                                        phi_1619_ = _e1521;
+                                                        phi_1672_ = 0u;
+                                                        phi_1675_ = _e1521;
                                                         loop {
-                                                            let _e1972 = phi_1616_;
-                                                            let _e1974 = phi_1619_;
+                                                            let _e1972 = phi_1672_;
+                                                            let _e1974 = phi_1675_;
                                                             local_187 = _e1972;
                                                             local_188 = _e1974;
                                                             local_491 = _e1974;
@@ -2463,90 +2463,90 @@ fn function_() {
                                                                 let _e1977 = local_188;
                                                                 let _e1978 = local_477;
                                                                 let _e1980 = local_187;
-                                                                phi_1617_ = (_e1980 + 1u);
-                                                                phi_1620_ = (_e1977 + _e1978);
+                                                                phi_1673_ = (_e1980 + 1u);
+                                                                phi_1676_ = (_e1977 + _e1978);
                                                             } else {
-                                                                phi_1617_ = u32();
-                                                                phi_1620_ = f32();
+                                                                phi_1673_ = u32();
+                                                                phi_1676_ = f32();
                                                             }
-                                                            let _e1983 = phi_1617_;
-                                                            let _e1985 = phi_1620_;
+                                                            let _e1983 = phi_1673_;
+                                                            let _e1985 = phi_1676_;
                                                             continue;
                                                             continuing {
                                                                 let _e1986 = local_189;
-                                                                phi_1616_ = _e1983;
-                                                                phi_1619_ = _e1985;
+                                                                phi_1672_ = _e1983;
+                                                                phi_1675_ = _e1985;
                                                                 break if !(_e1986);
                                                             }
                                                         }
                                                         let _e1988 = local_154;
-                                                        phi_1139_ = (_e1988 + 1f);
+                                                        phi_1195_ = (_e1988 + 1f);
                                                         let _e4551 = local_491;
-                                                        phi_1142_ = _e4551;
+                                                        phi_1198_ = _e4551;
                                                     } else {
-                                                        phi_1139_ = f32();
-                                                        phi_1142_ = f32();
+                                                        phi_1195_ = f32();
+                                                        phi_1198_ = f32();
                                                     }
-                                                    let _e1991 = phi_1139_;
-                                                    let _e1993 = phi_1142_;
+                                                    let _e1991 = phi_1195_;
+                                                    let _e1993 = phi_1198_;
                                                     continue;
                                                     continuing {
                                                         let _e1994 = local_155;
-                                                        phi_1138_ = _e1991;
-                                                        phi_1141_ = _e1993;
-                                                        phi_5000_ = _e1506;
+                                                        phi_1194_ = _e1991;
+                                                        phi_1197_ = _e1993;
+                                                        phi_5112_ = _e1506;
                                                         break if !(_e1994);
                                                     }
                                                 }
-                                                let _e1997 = phi_5000_;
-                                                phi_5067_ = _e1997;
+                                                let _e1997 = phi_5112_;
+                                                phi_5179_ = _e1997;
                                                 if _e1997 {
                                                     break;
                                                 }
                                                 let _e1998 = local_151;
-                                                phi_5068_ = _e1997;
-                                                phi_1125_ = (_e1998 + 1f);
+                                                phi_5180_ = _e1997;
+                                                phi_1181_ = (_e1998 + 1f);
                                                 let _e4557 = local_492;
-                                                phi_1128_ = _e4557;
+                                                phi_1184_ = _e4557;
                                             } else {
-                                                phi_5068_ = _e1506;
-                                                phi_1125_ = f32();
-                                                phi_1128_ = f32();
+                                                phi_5180_ = _e1506;
+                                                phi_1181_ = f32();
+                                                phi_1184_ = f32();
                                             }
-                                            let _e2001 = phi_5068_;
-                                            let _e2003 = phi_1125_;
-                                            let _e2005 = phi_1128_;
+                                            let _e2001 = phi_5180_;
+                                            let _e2003 = phi_1181_;
+                                            let _e2005 = phi_1184_;
                                             continue;
                                             continuing {
                                                 let _e2006 = local_152;
-                                                phi_5011_ = _e2001;
-                                                phi_1124_ = _e2003;
-                                                phi_1127_ = _e2005;
-                                                phi_5067_ = _e2001;
+                                                phi_5115_ = _e2001;
+                                                phi_1180_ = _e2003;
+                                                phi_1183_ = _e2005;
+                                                phi_5179_ = _e2001;
                                                 break if !(_e2006);
                                             }
                                         }
-                                        let _e2009 = phi_5067_;
-                                        phi_5323_ = _e2009;
+                                        let _e2009 = phi_5179_;
+                                        phi_5435_ = _e2009;
                                         if _e2009 {
                                             break;
                                         }
-                                        phi_5085_ = _e2009;
+                                        phi_5189_ = _e2009;
                                         let _e4563 = local_493;
-                                        phi_1632_ = _e4563;
+                                        phi_1688_ = _e4563;
                                     }
-                                    let _e2034 = phi_5085_;
-                                    let _e2036 = phi_1632_;
+                                    let _e2034 = phi_5189_;
+                                    let _e2036 = phi_1688_;
                                     let _e2037 = local_147;
-                                    phi_5084_ = _e2034;
-                                    phi_1634_ = (_e2037 / _e2036);
+                                    phi_5188_ = _e2034;
+                                    phi_1690_ = (_e2037 / _e2036);
                                 }
-                                let _e2040 = phi_5084_;
-                                let _e2042 = phi_1634_;
+                                let _e2040 = phi_5188_;
+                                let _e2042 = phi_1690_;
                                 local_190 = _e2042;
-                                phi_1636_ = 0u;
+                                phi_1692_ = 0u;
                                 loop {
-                                    let _e2044 = phi_1636_;
+                                    let _e2044 = phi_1692_;
                                     local_191 = _e2044;
                                     let _e2045 = local_191;
                                     let _e2046 = local_48;
@@ -2556,19 +2556,19 @@ fn function_() {
                                         let _e2051 = local_20;
                                         let _e2056 = local_475;
                                         let _e2057 = (_e2056 >= f32((2u * (_e2051 << bitcast<u32>((_e2049 & 31u))))));
-                                        phi_1637_ = select(u32(), _e2049, _e2057);
-                                        phi_1658_ = _e2057;
+                                        phi_1693_ = select(u32(), _e2049, _e2057);
+                                        phi_1714_ = _e2057;
                                     } else {
-                                        phi_1637_ = u32();
-                                        phi_1658_ = false;
+                                        phi_1693_ = u32();
+                                        phi_1714_ = false;
                                     }
-                                    let _e2060 = phi_1637_;
-                                    let _e2062 = phi_1658_;
+                                    let _e2060 = phi_1693_;
+                                    let _e2062 = phi_1714_;
                                     local_192 = _e2062;
                                     continue;
                                     continuing {
                                         let _e2063 = local_192;
-                                        phi_1636_ = _e2060;
+                                        phi_1692_ = _e2060;
                                         break if !(_e2063);
                                     }
                                 }
@@ -2580,7 +2580,7 @@ fn function_() {
                                 local_194 = _e2075;
                                 if (_e2075 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2077 = local_194;
@@ -2591,7 +2591,7 @@ fn function_() {
                                 local_195 = _e2081;
                                 if (_e2081 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2083 = local_195;
@@ -2604,7 +2604,7 @@ fn function_() {
                                 local_197 = _e2094;
                                 if (_e2094 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2096 = local_197;
@@ -2617,7 +2617,7 @@ fn function_() {
                                 local_199 = _e2102;
                                 if (_e2102 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2104 = local_199;
@@ -2630,7 +2630,7 @@ fn function_() {
                                 local_201 = _e2111;
                                 if (_e2111 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2113 = local_201;
@@ -2643,7 +2643,7 @@ fn function_() {
                                 local_203 = _e2121;
                                 if (_e2121 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2123 = local_203;
@@ -2656,7 +2656,7 @@ fn function_() {
                                 local_205 = _e2131;
                                 if (_e2131 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2133 = local_205;
@@ -2669,7 +2669,7 @@ fn function_() {
                                 local_207 = _e2141;
                                 if (_e2141 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2143 = local_207;
@@ -2680,17 +2680,17 @@ fn function_() {
                                 local_208 = _e2147;
                                 if (_e2147 < 5888u) {
                                 } else {
-                                    phi_5323_ = true;
+                                    phi_5435_ = true;
                                     break;
                                 }
                                 let _e2149 = local_208;
                                 let _e2151 = local_136;
                                 global_15[_e2149] = _e2151;
-                                phi_5080_ = _e2040;
+                                phi_5185_ = _e2040;
                             } else {
-                                phi_5080_ = _e1180;
+                                phi_5185_ = _e1180;
                             }
-                            let _e2153 = phi_5080_;
+                            let _e2153 = phi_5185_;
                             storageBarrier();
                             workgroupBarrier();
                             let _e2154 = local_52;
@@ -2699,9 +2699,9 @@ fn function_() {
                             let _e2158 = select(256u, _e2156, (_e2156 < 256u));
                             local_478 = _e2158;
                             local_490[0u] = false;
-                            phi_1763_ = 0u;
+                            phi_1819_ = 0u;
                             loop {
-                                let _e2161 = phi_1763_;
+                                let _e2161 = phi_1819_;
                                 local_209 = _e2161;
                                 let _e2162 = local_209;
                                 let _e2163 = (_e2162 < 1u);
@@ -2712,7 +2712,7 @@ fn function_() {
                                     local_211 = (_e2164 + _e2165);
                                     let _e2167 = local_37;
                                     if _e2167 {
-                                        phi_5069_ = true;
+                                        phi_5181_ = true;
                                         break;
                                     }
                                     let _e2168 = local_211;
@@ -2721,7 +2721,7 @@ fn function_() {
                                     local_212 = (_e2171 + (_e2168 % _e2169));
                                     let _e2173 = local_37;
                                     if _e2173 {
-                                        phi_5069_ = true;
+                                        phi_5181_ = true;
                                         break;
                                     }
                                     let _e2174 = local_211;
@@ -2738,46 +2738,46 @@ fn function_() {
                                         if _e2184 {
                                             let _e2185 = local_213;
                                             let _e2186 = local_18;
-                                            phi_1829_ = (_e2185 < _e2186);
+                                            phi_1885_ = (_e2185 < _e2186);
                                         } else {
-                                            phi_1829_ = bool();
+                                            phi_1885_ = bool();
                                         }
-                                        let _e2189 = phi_1829_;
+                                        let _e2189 = phi_1885_;
                                         let _e2190 = local_214;
-                                        phi_1831_ = _e2189;
-                                        phi_1832_ = select(true, false, _e2190);
+                                        phi_1887_ = _e2189;
+                                        phi_1888_ = select(true, false, _e2190);
                                     } else {
-                                        phi_1831_ = bool();
-                                        phi_1832_ = true;
+                                        phi_1887_ = bool();
+                                        phi_1888_ = true;
                                     }
-                                    let _e2193 = phi_1831_;
-                                    let _e2195 = phi_1832_;
+                                    let _e2193 = phi_1887_;
+                                    let _e2195 = phi_1888_;
                                     local_479 = select(_e2193, false, _e2195);
                                     let _e2197 = local_210;
                                     if _e2197 {
                                     } else {
-                                        phi_5069_ = true;
+                                        phi_5181_ = true;
                                         break;
                                     }
                                     let _e2198 = local_209;
                                     let _e2200 = local_479;
                                     local_490[_e2198] = _e2200;
                                     let _e2201 = local_209;
-                                    phi_1764_ = (_e2201 + 1u);
+                                    phi_1820_ = (_e2201 + 1u);
                                 } else {
-                                    phi_1764_ = u32();
+                                    phi_1820_ = u32();
                                 }
-                                let _e2204 = phi_1764_;
+                                let _e2204 = phi_1820_;
                                 continue;
                                 continuing {
                                     let _e2205 = local_210;
-                                    phi_1763_ = _e2204;
-                                    phi_5069_ = _e2153;
+                                    phi_1819_ = _e2204;
+                                    phi_5181_ = _e2153;
                                     break if !(_e2205);
                                 }
                             }
-                            let _e2208 = phi_5069_;
-                            phi_5323_ = _e2208;
+                            let _e2208 = phi_5181_;
+                            phi_5435_ = _e2208;
                             if _e2208 {
                                 break;
                             }
@@ -2785,24 +2785,24 @@ fn function_() {
                             local_487[0u] = _e2209;
                             let _e2211 = local_37;
                             if _e2211 {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2212 = local_37;
                             if _e2212 {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2213 = local_82;
                             local_215 = (f32(_e2213) + 0.5f);
                             let _e2216 = local_37;
                             if _e2216 {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2217 = local_37;
                             if _e2217 {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2218 = local_83;
@@ -2812,7 +2812,7 @@ fn function_() {
                             local_217 = _e2222;
                             if (_e2222 < 5888u) {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2224 = local_217;
@@ -2822,7 +2822,7 @@ fn function_() {
                             let _e2228 = local;
                             if (_e2228 < 5888u) {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2230 = local;
@@ -2833,7 +2833,7 @@ fn function_() {
                             local_220 = _e2235;
                             if (_e2235 < 5888u) {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2237 = local_220;
@@ -2844,7 +2844,7 @@ fn function_() {
                             local_222 = _e2242;
                             if (_e2242 < 5888u) {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2244 = local_222;
@@ -2854,7 +2854,7 @@ fn function_() {
                             let _e2251 = local_91;
                             if (_e2251 < 5888u) {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2253 = local_91;
@@ -2865,7 +2865,7 @@ fn function_() {
                             local_224 = _e2258;
                             if (_e2258 < 5888u) {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2260 = local_224;
@@ -2876,7 +2876,7 @@ fn function_() {
                             local_226 = _e2265;
                             if (_e2265 < 5888u) {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2267 = local_226;
@@ -2889,7 +2889,7 @@ fn function_() {
                             local_229 = _e2273;
                             if _e2273 {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2274 = local_228;
@@ -2898,7 +2898,7 @@ fn function_() {
                             let _e2279 = local_229;
                             if _e2279 {
                             } else {
-                                phi_5323_ = true;
+                                phi_5435_ = true;
                                 break;
                             }
                             let _e2280 = global_15[_e2274];
@@ -2907,9 +2907,9 @@ fn function_() {
                             let _e2285 = local_227;
                             let _e2286 = local_230;
                             local_486[0u] = false;
-                            phi_2063_ = 0u;
+                            phi_2119_ = 0u;
                             loop {
-                                let _e2290 = phi_2063_;
+                                let _e2290 = phi_2119_;
                                 local_231 = _e2290;
                                 let _e2291 = local_231;
                                 let _e2292 = (_e2291 < 1u);
@@ -2918,55 +2918,55 @@ fn function_() {
                                     let _e2293 = local_232;
                                     if _e2293 {
                                     } else {
-                                        phi_5087_ = true;
+                                        phi_5199_ = true;
                                         break;
                                     }
                                     let _e2294 = local_231;
                                     let _e2296 = local_487[_e2294];
                                     if _e2296 {
                                         let _e2297 = local_218;
-                                        phi_2084_ = (_e2297 < 0.99902344f);
+                                        phi_2140_ = (_e2297 < 0.99902344f);
                                     } else {
-                                        phi_2084_ = false;
+                                        phi_2140_ = false;
                                     }
-                                    let _e2300 = phi_2084_;
+                                    let _e2300 = phi_2140_;
                                     local_233 = _e2300;
                                     let _e2301 = local_232;
                                     if _e2301 {
                                     } else {
-                                        phi_5087_ = true;
+                                        phi_5199_ = true;
                                         break;
                                     }
                                     let _e2302 = local_231;
                                     let _e2304 = local_233;
                                     local_486[_e2302] = _e2304;
                                     let _e2305 = local_231;
-                                    phi_2064_ = (_e2305 + 1u);
+                                    phi_2120_ = (_e2305 + 1u);
                                 } else {
-                                    phi_2064_ = u32();
+                                    phi_2120_ = u32();
                                 }
-                                let _e2308 = phi_2064_;
+                                let _e2308 = phi_2120_;
                                 continue;
                                 continuing {
                                     let _e2309 = local_232;
-                                    phi_2063_ = _e2308;
-                                    phi_5087_ = _e2208;
+                                    phi_2119_ = _e2308;
+                                    phi_5199_ = _e2208;
                                     break if !(_e2309);
                                 }
                             }
-                            let _e2312 = phi_5087_;
-                            phi_5323_ = _e2312;
+                            let _e2312 = phi_5199_;
+                            phi_5435_ = _e2312;
                             if _e2312 {
                                 break;
                             }
                             let _e2313 = local_486[0u];
                             local_488[0u] = _e2313;
                             local_485[0u] = 0u;
-                            phi_5099_ = _e2312;
-                            phi_2097_ = 0u;
+                            phi_5210_ = _e2312;
+                            phi_2153_ = 0u;
                             loop {
-                                let _e2317 = phi_5099_;
-                                let _e2319 = phi_2097_;
+                                let _e2317 = phi_5210_;
+                                let _e2319 = phi_2153_;
                                 local_234 = _e2319;
                                 let _e2320 = local_234;
                                 let _e2321 = (_e2320 < 1u);
@@ -2975,7 +2975,7 @@ fn function_() {
                                     let _e2322 = local_235;
                                     if _e2322 {
                                     } else {
-                                        phi_5100_ = true;
+                                        phi_5212_ = true;
                                         break;
                                     }
                                     let _e2323 = local_234;
@@ -2987,17 +2987,17 @@ fn function_() {
                                         local_236 = _e2329;
                                         if (_e2329 < 5888u) {
                                         } else {
-                                            phi_5100_ = true;
+                                            phi_5212_ = true;
                                             break;
                                         }
                                         let _e2331 = local_236;
                                         let _e2333 = global_15[_e2331];
                                         local_237 = bitcast<f32>(_e2333);
-                                        phi_2127_ = 0u;
-                                        phi_2130_ = _e2158;
+                                        phi_2183_ = 0u;
+                                        phi_2186_ = _e2158;
                                         loop {
-                                            let _e2336 = phi_2127_;
-                                            let _e2338 = phi_2130_;
+                                            let _e2336 = phi_2183_;
+                                            let _e2338 = phi_2186_;
                                             local_238 = _e2336;
                                             local_239 = _e2338;
                                             local_494 = _e2336;
@@ -3014,7 +3014,7 @@ fn function_() {
                                                 local_242 = _e2346;
                                                 if (_e2346 < 5888u) {
                                                 } else {
-                                                    phi_5095_ = true;
+                                                    phi_5207_ = true;
                                                     break;
                                                 }
                                                 let _e2348 = local_242;
@@ -3023,76 +3023,76 @@ fn function_() {
                                                 let _e2353 = (bitcast<f32>(_e2350) >= _e2352);
                                                 local_243 = _e2353;
                                                 if _e2353 {
-                                                    phi_2154_ = _e2336;
+                                                    phi_2210_ = _e2336;
                                                 } else {
                                                     let _e2354 = local_241;
-                                                    phi_2154_ = (_e2354 + 1u);
+                                                    phi_2210_ = (_e2354 + 1u);
                                                 }
-                                                let _e2357 = phi_2154_;
+                                                let _e2357 = phi_2210_;
                                                 let _e2358 = local_243;
                                                 let _e2359 = local_241;
                                                 let _e2360 = local_239;
-                                                phi_2128_ = _e2357;
-                                                phi_2131_ = select(_e2360, _e2359, _e2358);
+                                                phi_2184_ = _e2357;
+                                                phi_2187_ = select(_e2360, _e2359, _e2358);
                                             } else {
-                                                phi_2128_ = u32();
-                                                phi_2131_ = u32();
+                                                phi_2184_ = u32();
+                                                phi_2187_ = u32();
                                             }
-                                            let _e2363 = phi_2128_;
-                                            let _e2365 = phi_2131_;
+                                            let _e2363 = phi_2184_;
+                                            let _e2365 = phi_2187_;
                                             continue;
                                             continuing {
                                                 let _e2366 = local_240;
-                                                phi_2127_ = _e2363;
-                                                phi_2130_ = _e2365;
-                                                phi_5095_ = _e2317;
+                                                phi_2183_ = _e2363;
+                                                phi_2186_ = _e2365;
+                                                phi_5207_ = _e2317;
                                                 break if !(_e2366);
                                             }
                                         }
-                                        let _e2369 = phi_5095_;
-                                        phi_5100_ = _e2369;
+                                        let _e2369 = phi_5207_;
+                                        phi_5212_ = _e2369;
                                         if _e2369 {
                                             break;
                                         }
-                                        phi_5102_ = _e2369;
+                                        phi_5214_ = _e2369;
                                         let _e4591 = local_494;
-                                        phi_2156_ = _e4591;
+                                        phi_2212_ = _e4591;
                                     } else {
-                                        phi_5102_ = _e2317;
-                                        phi_2156_ = 0u;
+                                        phi_5214_ = _e2317;
+                                        phi_2212_ = 0u;
                                     }
-                                    let _e2371 = phi_5102_;
-                                    let _e2373 = phi_2156_;
+                                    let _e2371 = phi_5214_;
+                                    let _e2373 = phi_2212_;
                                     local_244 = _e2373;
                                     let _e2374 = local_235;
                                     if _e2374 {
                                     } else {
-                                        phi_5100_ = true;
+                                        phi_5212_ = true;
                                         break;
                                     }
                                     let _e2375 = local_234;
                                     let _e2377 = local_244;
                                     local_485[_e2375] = _e2377;
                                     let _e2378 = local_234;
-                                    phi_5101_ = _e2371;
-                                    phi_2098_ = (_e2378 + 1u);
+                                    phi_5213_ = _e2371;
+                                    phi_2154_ = (_e2378 + 1u);
                                 } else {
-                                    phi_5101_ = _e2317;
-                                    phi_2098_ = u32();
+                                    phi_5213_ = _e2317;
+                                    phi_2154_ = u32();
                                 }
-                                let _e2381 = phi_5101_;
-                                let _e2383 = phi_2098_;
+                                let _e2381 = phi_5213_;
+                                let _e2383 = phi_2154_;
                                 continue;
                                 continuing {
                                     let _e2384 = local_235;
-                                    phi_5099_ = _e2381;
-                                    phi_2097_ = _e2383;
-                                    phi_5100_ = _e2381;
+                                    phi_5210_ = _e2381;
+                                    phi_2153_ = _e2383;
+                                    phi_5212_ = _e2381;
                                     break if !(_e2384);
                                 }
                             }
-                            let _e2387 = phi_5100_;
-                            phi_5323_ = _e2387;
+                            let _e2387 = phi_5212_;
+                            phi_5435_ = _e2387;
                             if _e2387 {
                                 break;
                             }
@@ -3102,25 +3102,25 @@ fn function_() {
                             let _e2391 = f32(_e2390);
                             let _e2392 = local_24;
                             local_245 = ((_e2392 >> bitcast<u32>(8u)) & 7u);
-                            phi_5108_ = _e2387;
-                            phi_2187_ = _e2227;
-                            phi_2190_ = type_32(_e2283, _e2284, _e2285, _e2286, ((_e2280 & 2u) != 0u));
-                            phi_2192_ = 0u;
-                            phi_2194_ = select(select(u32(_e2391), 0u, !((_e2391 >= 0f))), 4294967295u, (_e2391 > 4294967000f));
-                            phi_2196_ = _e2391;
-                            phi_2198_ = 0f;
-                            phi_2200_ = false;
-                            phi_2202_ = array<f32, 3>(_e2248, _e2249, bitcast<f32>(_e2246));
+                            phi_5218_ = _e2387;
+                            phi_2243_ = _e2227;
+                            phi_2246_ = type_32(_e2283, _e2284, _e2285, _e2286, ((_e2280 & 2u) != 0u));
+                            phi_2248_ = 0u;
+                            phi_2250_ = select(select(u32(_e2391), 0u, !((_e2391 >= 0f))), 4294967295u, (_e2391 > 4294967000f));
+                            phi_2252_ = _e2391;
+                            phi_2254_ = 0f;
+                            phi_2256_ = false;
+                            phi_2258_ = array<f32, 3>(_e2248, _e2249, bitcast<f32>(_e2246));
                             loop {
-                                let _e2403 = phi_5108_;
-                                let _e2405 = phi_2187_;
-                                let _e2407 = phi_2190_;
-                                let _e2409 = phi_2192_;
-                                let _e2411 = phi_2194_;
-                                let _e2413 = phi_2196_;
-                                let _e2415 = phi_2198_;
-                                let _e2417 = phi_2200_;
-                                let _e2419 = phi_2202_;
+                                let _e2403 = phi_5218_;
+                                let _e2405 = phi_2243_;
+                                let _e2407 = phi_2246_;
+                                let _e2409 = phi_2248_;
+                                let _e2411 = phi_2250_;
+                                let _e2413 = phi_2252_;
+                                let _e2415 = phi_2254_;
+                                let _e2417 = phi_2256_;
+                                let _e2419 = phi_2258_;
                                 local_246 = _e2405;
                                 local_247 = _e2407;
                                 local_248 = _e2409;
@@ -3139,7 +3139,7 @@ fn function_() {
                                     local_255 = _e2424;
                                     if (_e2424 < 5888u) {
                                     } else {
-                                        phi_5209_ = true;
+                                        phi_5321_ = true;
                                         break;
                                     }
                                     let _e2426 = local_255;
@@ -3150,7 +3150,7 @@ fn function_() {
                                     local_257 = _e2431;
                                     if (_e2431 < 5888u) {
                                     } else {
-                                        phi_5209_ = true;
+                                        phi_5321_ = true;
                                         break;
                                     }
                                     let _e2433 = local_257;
@@ -3161,7 +3161,7 @@ fn function_() {
                                     local_259 = _e2438;
                                     if (_e2438 < 5888u) {
                                     } else {
-                                        phi_5209_ = true;
+                                        phi_5321_ = true;
                                         break;
                                     }
                                     let _e2440 = local_259;
@@ -3188,7 +3188,7 @@ fn function_() {
                                         local_265 = _e2461;
                                         if (_e2461 < 5888u) {
                                         } else {
-                                            phi_5209_ = true;
+                                            phi_5321_ = true;
                                             break;
                                         }
                                         let _e2463 = local_265;
@@ -3199,7 +3199,7 @@ fn function_() {
                                         local_267 = _e2467;
                                         if (_e2467 < 5888u) {
                                         } else {
-                                            phi_5209_ = true;
+                                            phi_5321_ = true;
                                             break;
                                         }
                                         let _e2469 = local_267;
@@ -3228,13 +3228,13 @@ fn function_() {
                                                 let _e2932 = local_245;
                                                 let _e2933 = local_245;
                                                 local_275 = (_e2932 * _e2933);
-                                                phi_2290_ = 0u;
-                                                phi_2293_ = 0f;
-                                                phi_2295_ = 0u;
+                                                phi_2346_ = 0u;
+                                                phi_2349_ = 0f;
+                                                phi_2351_ = 0u;
                                                 loop {
-                                                    let _e2936 = phi_2290_;
-                                                    let _e2938 = phi_2293_;
-                                                    let _e2940 = phi_2295_;
+                                                    let _e2936 = phi_2346_;
+                                                    let _e2938 = phi_2349_;
+                                                    let _e2940 = phi_2351_;
                                                     local_276 = _e2936;
                                                     local_277 = _e2938;
                                                     local_278 = _e2940;
@@ -3247,8 +3247,8 @@ fn function_() {
                                                             let _e2946 = local_276;
                                                             let _e2950 = local_266;
                                                             if ((_e2950 & (1u << bitcast<u32>((_e2946 & 31u)))) == 0u) {
-                                                                phi_3133_ = _e2938;
-                                                                phi_3134_ = _e2940;
+                                                                phi_3189_ = _e2938;
+                                                                phi_3190_ = _e2940;
                                                             } else {
                                                                 let _e2953 = local_245;
                                                                 local_279 = f32(_e2953);
@@ -3256,7 +3256,7 @@ fn function_() {
                                                                 let _e2956 = (_e2955 == 0u);
                                                                 local_280 = _e2956;
                                                                 if _e2956 {
-                                                                    phi_5103_ = true;
+                                                                    phi_5215_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2957 = local_276;
@@ -3265,7 +3265,7 @@ fn function_() {
                                                                 local_281 = ((f32((_e2957 % _e2958)) + 0.5f) / _e2962);
                                                                 let _e2964 = local_280;
                                                                 if _e2964 {
-                                                                    phi_5103_ = true;
+                                                                    phi_5215_ = true;
                                                                     break;
                                                                 }
                                                                 let _e2965 = local_276;
@@ -3457,109 +3457,109 @@ fn function_() {
                                                                             let _e3399 = local_285;
                                                                             let _e3400 = local_283;
                                                                             let _e3402 = ((_e3396 - _e3397) * (_e3399 - _e3400));
-                                                                            phi_3106_ = select(select(0f, _e3395, (0f < _e3395)), _e3402, (_e3402 < _e3395));
+                                                                            phi_3162_ = select(select(0f, _e3395, (0f < _e3395)), _e3402, (_e3402 < _e3395));
                                                                         } else {
-                                                                            phi_3106_ = 0f;
+                                                                            phi_3162_ = 0f;
                                                                         }
-                                                                        let _e3408 = phi_3106_;
+                                                                        let _e3408 = phi_3162_;
                                                                         let _e3409 = local_290;
-                                                                        phi_3111_ = select(_e3408, 1f, _e3409);
+                                                                        phi_3167_ = select(_e3408, 1f, _e3409);
                                                                     } else {
-                                                                        phi_3111_ = 1f;
+                                                                        phi_3167_ = 1f;
                                                                     }
-                                                                    let _e3412 = phi_3111_;
+                                                                    let _e3412 = phi_3167_;
                                                                     let _e3413 = local_272;
                                                                     let _e3415 = local_288;
-                                                                    phi_3130_ = select((_e3412 / _e3413), 0f, _e3415);
+                                                                    phi_3186_ = select((_e3412 / _e3413), 0f, _e3415);
                                                                 } else {
                                                                     let _e2981 = local_282;
                                                                     let _e2983 = local_284;
                                                                     let _e2986 = local_283;
                                                                     let _e2989 = local_285;
-                                                                    phi_3130_ = select(0f, 1f, ((((_e2981 <= 0f) && (0f < _e2983)) && (_e2986 <= 0f)) && (0f < _e2989)));
+                                                                    phi_3186_ = select(0f, 1f, ((((_e2981 <= 0f) && (0f < _e2983)) && (_e2986 <= 0f)) && (0f < _e2989)));
                                                                 }
-                                                                let _e3418 = phi_3130_;
+                                                                let _e3418 = phi_3186_;
                                                                 let _e3419 = local_277;
                                                                 let _e3421 = local_278;
-                                                                phi_3133_ = (_e3419 + _e3418);
-                                                                phi_3134_ = (_e3421 + 1u);
+                                                                phi_3189_ = (_e3419 + _e3418);
+                                                                phi_3190_ = (_e3421 + 1u);
                                                             }
-                                                            let _e3424 = phi_3133_;
-                                                            let _e3426 = phi_3134_;
+                                                            let _e3424 = phi_3189_;
+                                                            let _e3426 = phi_3190_;
                                                             let _e3427 = local_276;
-                                                            phi_3136_ = (_e3427 + 1u);
-                                                            phi_3137_ = _e3424;
-                                                            phi_3138_ = _e3426;
+                                                            phi_3192_ = (_e3427 + 1u);
+                                                            phi_3193_ = _e3424;
+                                                            phi_3194_ = _e3426;
                                                         } else {
-                                                            phi_3136_ = u32();
-                                                            phi_3137_ = f32();
-                                                            phi_3138_ = u32();
+                                                            phi_3192_ = u32();
+                                                            phi_3193_ = f32();
+                                                            phi_3194_ = u32();
                                                         }
-                                                        let _e3430 = phi_3136_;
-                                                        let _e3432 = phi_3137_;
-                                                        let _e3434 = phi_3138_;
-                                                        phi_2291_ = _e3430;
-                                                        phi_2294_ = _e3432;
-                                                        phi_2296_ = _e3434;
-                                                        phi_3139_ = _e2945;
+                                                        let _e3430 = phi_3192_;
+                                                        let _e3432 = phi_3193_;
+                                                        let _e3434 = phi_3194_;
+                                                        phi_2347_ = _e3430;
+                                                        phi_2350_ = _e3432;
+                                                        phi_2352_ = _e3434;
+                                                        phi_3195_ = _e2945;
                                                     } else {
-                                                        phi_2291_ = u32();
-                                                        phi_2294_ = f32();
-                                                        phi_2296_ = u32();
-                                                        phi_3139_ = false;
+                                                        phi_2347_ = u32();
+                                                        phi_2350_ = f32();
+                                                        phi_2352_ = u32();
+                                                        phi_3195_ = false;
                                                     }
-                                                    let _e3436 = phi_2291_;
-                                                    let _e3438 = phi_2294_;
-                                                    let _e3440 = phi_2296_;
-                                                    let _e3442 = phi_3139_;
+                                                    let _e3436 = phi_2347_;
+                                                    let _e3438 = phi_2350_;
+                                                    let _e3440 = phi_2352_;
+                                                    let _e3442 = phi_3195_;
                                                     local_291 = _e3442;
                                                     continue;
                                                     continuing {
                                                         let _e3443 = local_291;
-                                                        phi_2290_ = _e3436;
-                                                        phi_2293_ = _e3438;
-                                                        phi_2295_ = _e3440;
-                                                        phi_5103_ = _e2403;
+                                                        phi_2346_ = _e3436;
+                                                        phi_2349_ = _e3438;
+                                                        phi_2351_ = _e3440;
+                                                        phi_5215_ = _e2403;
                                                         break if !(_e3443);
                                                     }
                                                 }
-                                                let _e3446 = phi_5103_;
-                                                phi_5209_ = _e3446;
+                                                let _e3446 = phi_5215_;
+                                                phi_5321_ = _e3446;
                                                 if _e3446 {
                                                     break;
                                                 }
                                                 let _e3447 = local_278;
                                                 if (_e3447 == 0u) {
-                                                    phi_3150_ = 0f;
+                                                    phi_3206_ = 0f;
                                                 } else {
                                                     let _e3449 = local_278;
                                                     let _e3451 = local_277;
-                                                    phi_3150_ = (_e3451 / f32(_e3449));
+                                                    phi_3206_ = (_e3451 / f32(_e3449));
                                                 }
-                                                let _e3454 = phi_3150_;
+                                                let _e3454 = phi_3206_;
                                                 let _e3455 = local_271;
                                                 let _e3456 = local_273;
-                                                phi_5232_ = _e3446;
-                                                phi_3155_ = select(_e3454, _e3456, _e3455);
+                                                phi_5377_ = _e3446;
+                                                phi_3211_ = select(_e3454, _e3456, _e3455);
                                             } else {
-                                                phi_5232_ = _e2403;
-                                                phi_3155_ = _e2928;
+                                                phi_5377_ = _e2403;
+                                                phi_3211_ = _e2928;
                                             }
-                                            let _e3459 = phi_5232_;
-                                            let _e3461 = phi_3155_;
-                                            phi_5231_ = _e3459;
-                                            phi_3622_ = _e3461;
+                                            let _e3459 = phi_5377_;
+                                            let _e3461 = phi_3211_;
+                                            phi_5333_ = _e3459;
+                                            phi_3678_ = _e3461;
                                         } else {
                                             let _e2475 = local_29;
                                             let _e2476 = (_e2475 == 0u);
                                             local_292 = _e2476;
                                             if _e2476 {
                                                 let _e2477 = local_36;
-                                                phi_3166_ = (_e2477 == 0u);
+                                                phi_3222_ = (_e2477 == 0u);
                                             } else {
-                                                phi_3166_ = false;
+                                                phi_3222_ = false;
                                             }
-                                            let _e2480 = phi_3166_;
+                                            let _e2480 = phi_3222_;
                                             if _e2480 {
                                                 let _e2895 = local_260;
                                                 let _e2896 = local_268;
@@ -3569,14 +3569,14 @@ fn function_() {
                                                 let _e2905 = local_260;
                                                 let _e2907 = local_268;
                                                 let _e2909 = ((_e2905 - sqrt(_e2903)) * (1f / _e2907));
-                                                phi_3621_ = select(select(0f, select(1f, _e2909, (_e2909 < 1f)), (0f < _e2909)), 1f, ((0f < _e2897) && (_e2900 <= (_e2897 * _e2897))));
+                                                phi_3677_ = select(select(0f, select(1f, _e2909, (_e2909 < 1f)), (0f < _e2909)), 1f, ((0f < _e2897) && (_e2900 <= (_e2897 * _e2897))));
                                             } else {
                                                 let _e2481 = local_248;
                                                 let _e2482 = (3840u + _e2481);
                                                 local_293 = _e2482;
                                                 if (_e2482 < 5888u) {
                                                 } else {
-                                                    phi_5209_ = true;
+                                                    phi_5321_ = true;
                                                     break;
                                                 }
                                                 let _e2484 = local_293;
@@ -3585,11 +3585,11 @@ fn function_() {
                                                 let _e2488 = local_292;
                                                 if _e2488 {
                                                     let _e2489 = local_36;
-                                                    phi_3212_ = (_e2489 == 0u);
+                                                    phi_3268_ = (_e2489 == 0u);
                                                 } else {
-                                                    phi_3212_ = false;
+                                                    phi_3268_ = false;
                                                 }
-                                                let _e2492 = phi_3212_;
+                                                let _e2492 = phi_3268_;
                                                 if _e2492 {
                                                     let _e2873 = local_260;
                                                     let _e2874 = local_268;
@@ -3599,7 +3599,7 @@ fn function_() {
                                                     let _e2883 = local_260;
                                                     let _e2885 = local_268;
                                                     let _e2887 = ((_e2883 - sqrt(_e2881)) * (1f / _e2885));
-                                                    phi_3620_ = select(select(0f, select(1f, _e2887, (_e2887 < 1f)), (0f < _e2887)), 1f, ((0f < _e2875) && (_e2878 <= (_e2875 * _e2875))));
+                                                    phi_3676_ = select(select(0f, select(1f, _e2887, (_e2887 < 1f)), (0f < _e2887)), 1f, ((0f < _e2875) && (_e2878 <= (_e2875 * _e2875))));
                                                 } else {
                                                     let _e2493 = local_294;
                                                     let _e2494 = local_261;
@@ -3648,25 +3648,25 @@ fn function_() {
                                                                             let _e2620 = (_e2613 < 0f);
                                                                             local_306 = _e2620;
                                                                             if _e2620 {
-                                                                                phi_3333_ = f32();
-                                                                                phi_3334_ = true;
+                                                                                phi_3389_ = f32();
+                                                                                phi_3390_ = true;
                                                                             } else {
                                                                                 let _e2621 = local_303;
                                                                                 if (_e2621 < 0f) {
-                                                                                    phi_3331_ = f32();
-                                                                                    phi_3332_ = true;
+                                                                                    phi_3387_ = f32();
+                                                                                    phi_3388_ = true;
                                                                                 } else {
                                                                                     let _e2623 = local_302;
                                                                                     let _e2624 = local_298;
                                                                                     if (_e2623 >= _e2624) {
-                                                                                        phi_3329_ = f32();
-                                                                                        phi_3330_ = true;
+                                                                                        phi_3385_ = f32();
+                                                                                        phi_3386_ = true;
                                                                                     } else {
                                                                                         let _e2626 = local_303;
                                                                                         let _e2627 = local_298;
                                                                                         let _e2628 = (_e2626 >= _e2627);
                                                                                         if _e2628 {
-                                                                                            phi_3328_ = f32();
+                                                                                            phi_3384_ = f32();
                                                                                         } else {
                                                                                             let _e2629 = local_303;
                                                                                             let _e2631 = local_303;
@@ -3680,29 +3680,29 @@ fn function_() {
                                                                                             let _e2650 = local_12;
                                                                                             if (_e2649 < _e2650) {
                                                                                             } else {
-                                                                                                phi_5209_ = true;
+                                                                                                phi_5321_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2652 = local_307;
                                                                                             let _e2655 = global_14.member[_e2652];
-                                                                                            phi_3328_ = bitcast<f32>(_e2655);
+                                                                                            phi_3384_ = bitcast<f32>(_e2655);
                                                                                         }
-                                                                                        let _e2658 = phi_3328_;
-                                                                                        phi_3329_ = _e2658;
-                                                                                        phi_3330_ = _e2628;
+                                                                                        let _e2658 = phi_3384_;
+                                                                                        phi_3385_ = _e2658;
+                                                                                        phi_3386_ = _e2628;
                                                                                     }
-                                                                                    let _e2660 = phi_3329_;
-                                                                                    let _e2662 = phi_3330_;
-                                                                                    phi_3331_ = _e2660;
-                                                                                    phi_3332_ = _e2662;
+                                                                                    let _e2660 = phi_3385_;
+                                                                                    let _e2662 = phi_3386_;
+                                                                                    phi_3387_ = _e2660;
+                                                                                    phi_3388_ = _e2662;
                                                                                 }
-                                                                                let _e2664 = phi_3331_;
-                                                                                let _e2666 = phi_3332_;
-                                                                                phi_3333_ = _e2664;
-                                                                                phi_3334_ = _e2666;
+                                                                                let _e2664 = phi_3387_;
+                                                                                let _e2666 = phi_3388_;
+                                                                                phi_3389_ = _e2664;
+                                                                                phi_3390_ = _e2666;
                                                                             }
-                                                                            let _e2668 = phi_3333_;
-                                                                            let _e2670 = phi_3334_;
+                                                                            let _e2668 = phi_3389_;
+                                                                            let _e2670 = phi_3390_;
                                                                             let _e2672 = local_304;
                                                                             let _e2673 = (1f - _e2672);
                                                                             local_308 = _e2673;
@@ -3713,25 +3713,25 @@ fn function_() {
                                                                             let _e2677 = (_e2676 < 0f);
                                                                             local_311 = _e2677;
                                                                             if _e2677 {
-                                                                                phi_3389_ = f32();
-                                                                                phi_3390_ = true;
+                                                                                phi_3445_ = f32();
+                                                                                phi_3446_ = true;
                                                                             } else {
                                                                                 let _e2678 = local_303;
                                                                                 if (_e2678 < 0f) {
-                                                                                    phi_3387_ = f32();
-                                                                                    phi_3388_ = true;
+                                                                                    phi_3443_ = f32();
+                                                                                    phi_3444_ = true;
                                                                                 } else {
                                                                                     let _e2680 = local_310;
                                                                                     let _e2681 = local_298;
                                                                                     if (_e2680 >= _e2681) {
-                                                                                        phi_3385_ = f32();
-                                                                                        phi_3386_ = true;
+                                                                                        phi_3441_ = f32();
+                                                                                        phi_3442_ = true;
                                                                                     } else {
                                                                                         let _e2683 = local_303;
                                                                                         let _e2684 = local_298;
                                                                                         let _e2685 = (_e2683 >= _e2684);
                                                                                         if _e2685 {
-                                                                                            phi_3384_ = f32();
+                                                                                            phi_3440_ = f32();
                                                                                         } else {
                                                                                             let _e2686 = local_303;
                                                                                             let _e2688 = local_303;
@@ -3745,29 +3745,29 @@ fn function_() {
                                                                                             let _e2707 = local_12;
                                                                                             if (_e2706 < _e2707) {
                                                                                             } else {
-                                                                                                phi_5209_ = true;
+                                                                                                phi_5321_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2709 = local_312;
                                                                                             let _e2712 = global_14.member[_e2709];
-                                                                                            phi_3384_ = bitcast<f32>(_e2712);
+                                                                                            phi_3440_ = bitcast<f32>(_e2712);
                                                                                         }
-                                                                                        let _e2715 = phi_3384_;
-                                                                                        phi_3385_ = _e2715;
-                                                                                        phi_3386_ = _e2685;
+                                                                                        let _e2715 = phi_3440_;
+                                                                                        phi_3441_ = _e2715;
+                                                                                        phi_3442_ = _e2685;
                                                                                     }
-                                                                                    let _e2717 = phi_3385_;
-                                                                                    let _e2719 = phi_3386_;
-                                                                                    phi_3387_ = _e2717;
-                                                                                    phi_3388_ = _e2719;
+                                                                                    let _e2717 = phi_3441_;
+                                                                                    let _e2719 = phi_3442_;
+                                                                                    phi_3443_ = _e2717;
+                                                                                    phi_3444_ = _e2719;
                                                                                 }
-                                                                                let _e2721 = phi_3387_;
-                                                                                let _e2723 = phi_3388_;
-                                                                                phi_3389_ = _e2721;
-                                                                                phi_3390_ = _e2723;
+                                                                                let _e2721 = phi_3443_;
+                                                                                let _e2723 = phi_3444_;
+                                                                                phi_3445_ = _e2721;
+                                                                                phi_3446_ = _e2723;
                                                                             }
-                                                                            let _e2725 = phi_3389_;
-                                                                            let _e2727 = phi_3390_;
+                                                                            let _e2725 = phi_3445_;
+                                                                            let _e2727 = phi_3446_;
                                                                             let _e2729 = local_304;
                                                                             let _e2731 = local_309;
                                                                             local_313 = (_e2731 + (select(_e2725, 0f, _e2727) * _e2729));
@@ -3775,25 +3775,25 @@ fn function_() {
                                                                             local_314 = (_e2733 + 1f);
                                                                             let _e2735 = local_306;
                                                                             if _e2735 {
-                                                                                phi_3445_ = f32();
-                                                                                phi_3446_ = true;
+                                                                                phi_3501_ = f32();
+                                                                                phi_3502_ = true;
                                                                             } else {
                                                                                 let _e2736 = local_314;
                                                                                 if (_e2736 < 0f) {
-                                                                                    phi_3443_ = f32();
-                                                                                    phi_3444_ = true;
+                                                                                    phi_3499_ = f32();
+                                                                                    phi_3500_ = true;
                                                                                 } else {
                                                                                     let _e2738 = local_302;
                                                                                     let _e2739 = local_298;
                                                                                     if (_e2738 >= _e2739) {
-                                                                                        phi_3441_ = f32();
-                                                                                        phi_3442_ = true;
+                                                                                        phi_3497_ = f32();
+                                                                                        phi_3498_ = true;
                                                                                     } else {
                                                                                         let _e2741 = local_314;
                                                                                         let _e2742 = local_298;
                                                                                         let _e2743 = (_e2741 >= _e2742);
                                                                                         if _e2743 {
-                                                                                            phi_3440_ = f32();
+                                                                                            phi_3496_ = f32();
                                                                                         } else {
                                                                                             let _e2744 = local_314;
                                                                                             let _e2746 = local_314;
@@ -3807,52 +3807,52 @@ fn function_() {
                                                                                             let _e2765 = local_12;
                                                                                             if (_e2764 < _e2765) {
                                                                                             } else {
-                                                                                                phi_5209_ = true;
+                                                                                                phi_5321_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2767 = local_315;
                                                                                             let _e2770 = global_14.member[_e2767];
-                                                                                            phi_3440_ = bitcast<f32>(_e2770);
+                                                                                            phi_3496_ = bitcast<f32>(_e2770);
                                                                                         }
-                                                                                        let _e2773 = phi_3440_;
-                                                                                        phi_3441_ = _e2773;
-                                                                                        phi_3442_ = _e2743;
+                                                                                        let _e2773 = phi_3496_;
+                                                                                        phi_3497_ = _e2773;
+                                                                                        phi_3498_ = _e2743;
                                                                                     }
-                                                                                    let _e2775 = phi_3441_;
-                                                                                    let _e2777 = phi_3442_;
-                                                                                    phi_3443_ = _e2775;
-                                                                                    phi_3444_ = _e2777;
+                                                                                    let _e2775 = phi_3497_;
+                                                                                    let _e2777 = phi_3498_;
+                                                                                    phi_3499_ = _e2775;
+                                                                                    phi_3500_ = _e2777;
                                                                                 }
-                                                                                let _e2779 = phi_3443_;
-                                                                                let _e2781 = phi_3444_;
-                                                                                phi_3445_ = _e2779;
-                                                                                phi_3446_ = _e2781;
+                                                                                let _e2779 = phi_3499_;
+                                                                                let _e2781 = phi_3500_;
+                                                                                phi_3501_ = _e2779;
+                                                                                phi_3502_ = _e2781;
                                                                             }
-                                                                            let _e2783 = phi_3445_;
-                                                                            let _e2785 = phi_3446_;
+                                                                            let _e2783 = phi_3501_;
+                                                                            let _e2785 = phi_3502_;
                                                                             let _e2787 = local_308;
                                                                             local_316 = (select(_e2783, 0f, _e2785) * _e2787);
                                                                             let _e2789 = local_311;
                                                                             if _e2789 {
-                                                                                phi_3502_ = f32();
-                                                                                phi_3503_ = true;
+                                                                                phi_3558_ = f32();
+                                                                                phi_3559_ = true;
                                                                             } else {
                                                                                 let _e2790 = local_314;
                                                                                 if (_e2790 < 0f) {
-                                                                                    phi_3500_ = f32();
-                                                                                    phi_3501_ = true;
+                                                                                    phi_3556_ = f32();
+                                                                                    phi_3557_ = true;
                                                                                 } else {
                                                                                     let _e2792 = local_310;
                                                                                     let _e2793 = local_298;
                                                                                     if (_e2792 >= _e2793) {
-                                                                                        phi_3498_ = f32();
-                                                                                        phi_3499_ = true;
+                                                                                        phi_3554_ = f32();
+                                                                                        phi_3555_ = true;
                                                                                     } else {
                                                                                         let _e2795 = local_314;
                                                                                         let _e2796 = local_298;
                                                                                         let _e2797 = (_e2795 >= _e2796);
                                                                                         if _e2797 {
-                                                                                            phi_3497_ = f32();
+                                                                                            phi_3553_ = f32();
                                                                                         } else {
                                                                                             let _e2798 = local_314;
                                                                                             let _e2800 = local_314;
@@ -3866,70 +3866,70 @@ fn function_() {
                                                                                             let _e2819 = local_12;
                                                                                             if (_e2818 < _e2819) {
                                                                                             } else {
-                                                                                                phi_5209_ = true;
+                                                                                                phi_5321_ = true;
                                                                                                 break;
                                                                                             }
                                                                                             let _e2821 = local_317;
                                                                                             let _e2824 = global_14.member[_e2821];
-                                                                                            phi_3497_ = bitcast<f32>(_e2824);
+                                                                                            phi_3553_ = bitcast<f32>(_e2824);
                                                                                         }
-                                                                                        let _e2827 = phi_3497_;
-                                                                                        phi_3498_ = _e2827;
-                                                                                        phi_3499_ = _e2797;
+                                                                                        let _e2827 = phi_3553_;
+                                                                                        phi_3554_ = _e2827;
+                                                                                        phi_3555_ = _e2797;
                                                                                     }
-                                                                                    let _e2829 = phi_3498_;
-                                                                                    let _e2831 = phi_3499_;
-                                                                                    phi_3500_ = _e2829;
-                                                                                    phi_3501_ = _e2831;
+                                                                                    let _e2829 = phi_3554_;
+                                                                                    let _e2831 = phi_3555_;
+                                                                                    phi_3556_ = _e2829;
+                                                                                    phi_3557_ = _e2831;
                                                                                 }
-                                                                                let _e2833 = phi_3500_;
-                                                                                let _e2835 = phi_3501_;
-                                                                                phi_3502_ = _e2833;
-                                                                                phi_3503_ = _e2835;
+                                                                                let _e2833 = phi_3556_;
+                                                                                let _e2835 = phi_3557_;
+                                                                                phi_3558_ = _e2833;
+                                                                                phi_3559_ = _e2835;
                                                                             }
-                                                                            let _e2837 = phi_3502_;
-                                                                            let _e2839 = phi_3503_;
+                                                                            let _e2837 = phi_3558_;
+                                                                            let _e2839 = phi_3559_;
                                                                             let _e2841 = local_304;
                                                                             let _e2843 = local_316;
                                                                             let _e2845 = local_305;
                                                                             let _e2847 = local_313;
                                                                             let _e2849 = local_305;
-                                                                            phi_3514_ = ((_e2847 * (1f - _e2845)) + ((_e2843 + (select(_e2837, 0f, _e2839) * _e2841)) * _e2849));
+                                                                            phi_3570_ = ((_e2847 * (1f - _e2845)) + ((_e2843 + (select(_e2837, 0f, _e2839) * _e2841)) * _e2849));
                                                                         } else {
-                                                                            phi_3514_ = f32();
+                                                                            phi_3570_ = f32();
                                                                         }
-                                                                        let _e2853 = phi_3514_;
+                                                                        let _e2853 = phi_3570_;
                                                                         let _e2854 = local_301;
-                                                                        phi_3516_ = _e2853;
-                                                                        phi_3517_ = select(true, false, _e2854);
+                                                                        phi_3572_ = _e2853;
+                                                                        phi_3573_ = select(true, false, _e2854);
                                                                     } else {
-                                                                        phi_3516_ = f32();
-                                                                        phi_3517_ = true;
+                                                                        phi_3572_ = f32();
+                                                                        phi_3573_ = true;
                                                                     }
-                                                                    let _e2857 = phi_3516_;
-                                                                    let _e2859 = phi_3517_;
-                                                                    phi_3518_ = _e2857;
-                                                                    phi_3519_ = _e2859;
+                                                                    let _e2857 = phi_3572_;
+                                                                    let _e2859 = phi_3573_;
+                                                                    phi_3574_ = _e2857;
+                                                                    phi_3575_ = _e2859;
                                                                 } else {
-                                                                    phi_3518_ = f32();
-                                                                    phi_3519_ = true;
+                                                                    phi_3574_ = f32();
+                                                                    phi_3575_ = true;
                                                                 }
-                                                                let _e2861 = phi_3518_;
-                                                                let _e2863 = phi_3519_;
-                                                                phi_3520_ = _e2861;
-                                                                phi_3521_ = _e2863;
+                                                                let _e2861 = phi_3574_;
+                                                                let _e2863 = phi_3575_;
+                                                                phi_3576_ = _e2861;
+                                                                phi_3577_ = _e2863;
                                                             } else {
-                                                                phi_3520_ = f32();
-                                                                phi_3521_ = true;
+                                                                phi_3576_ = f32();
+                                                                phi_3577_ = true;
                                                             }
-                                                            let _e2865 = phi_3520_;
-                                                            let _e2867 = phi_3521_;
-                                                            phi_3526_ = select(_e2865, 0f, _e2867);
+                                                            let _e2865 = phi_3576_;
+                                                            let _e2867 = phi_3577_;
+                                                            phi_3582_ = select(_e2865, 0f, _e2867);
                                                         } else {
-                                                            phi_3526_ = 0f;
+                                                            phi_3582_ = 0f;
                                                         }
-                                                        let _e2870 = phi_3526_;
-                                                        phi_3619_ = _e2870;
+                                                        let _e2870 = phi_3582_;
+                                                        phi_3675_ = _e2870;
                                                     } else {
                                                         let _e2501 = local_295;
                                                         let _e2502 = local_295;
@@ -3939,19 +3939,19 @@ fn function_() {
                                                         local_318 = _e2508;
                                                         let _e2509 = local_292;
                                                         if _e2509 {
-                                                            phi_3606_ = _e2508;
+                                                            phi_3662_ = _e2508;
                                                         } else {
                                                             let _e2510 = local_31;
                                                             let _e2512 = local_295;
                                                             let _e2514 = local_31;
                                                             let _e2516 = local_296;
-                                                            phi_3548_ = 1u;
-                                                            phi_3551_ = ((_e2512 * _e2510[0]) + (_e2516 * _e2514[1]));
-                                                            phi_3553_ = _e658.member_16.member_2;
+                                                            phi_3604_ = 1u;
+                                                            phi_3607_ = ((_e2512 * _e2510[0]) + (_e2516 * _e2514[1]));
+                                                            phi_3609_ = _e658.member_16.member_2;
                                                             loop {
-                                                                let _e2520 = phi_3548_;
-                                                                let _e2522 = phi_3551_;
-                                                                let _e2524 = phi_3553_;
+                                                                let _e2520 = phi_3604_;
+                                                                let _e2522 = phi_3607_;
+                                                                let _e2524 = phi_3609_;
                                                                 local_319 = _e2520;
                                                                 local_320 = _e2522;
                                                                 local_321 = _e2524;
@@ -3974,23 +3974,23 @@ fn function_() {
                                                                     let _e2548 = local_320;
                                                                     let _e2550 = local_320;
                                                                     let _e2552 = local_319;
-                                                                    phi_3549_ = (_e2552 + 1u);
-                                                                    phi_3552_ = select(_e2550, _e2547, (_e2547 > _e2548));
-                                                                    phi_3554_ = array<f32, 2>(_e2536, _e2541);
+                                                                    phi_3605_ = (_e2552 + 1u);
+                                                                    phi_3608_ = select(_e2550, _e2547, (_e2547 > _e2548));
+                                                                    phi_3610_ = array<f32, 2>(_e2536, _e2541);
                                                                 } else {
-                                                                    phi_3549_ = u32();
-                                                                    phi_3552_ = f32();
-                                                                    phi_3554_ = array<f32, 2>();
+                                                                    phi_3605_ = u32();
+                                                                    phi_3608_ = f32();
+                                                                    phi_3610_ = array<f32, 2>();
                                                                 }
-                                                                let _e2555 = phi_3549_;
-                                                                let _e2557 = phi_3552_;
-                                                                let _e2559 = phi_3554_;
+                                                                let _e2555 = phi_3605_;
+                                                                let _e2557 = phi_3608_;
+                                                                let _e2559 = phi_3610_;
                                                                 continue;
                                                                 continuing {
                                                                     let _e2560 = local_322;
-                                                                    phi_3548_ = _e2555;
-                                                                    phi_3551_ = _e2557;
-                                                                    phi_3553_ = _e2559;
+                                                                    phi_3604_ = _e2555;
+                                                                    phi_3607_ = _e2557;
+                                                                    phi_3609_ = _e2559;
                                                                     break if !(_e2560);
                                                                 }
                                                             }
@@ -3999,33 +3999,33 @@ fn function_() {
                                                             let _e2566 = local_34;
                                                             let _e2568 = local_30;
                                                             let _e2569 = local_318;
-                                                            phi_3606_ = ((((1f - _e2562) * _e2564) * _e2566) + (_e2568 * _e2569));
+                                                            phi_3662_ = ((((1f - _e2562) * _e2564) * _e2566) + (_e2568 * _e2569));
                                                         }
-                                                        let _e2573 = phi_3606_;
+                                                        let _e2573 = phi_3662_;
                                                         let _e2574 = local_260;
                                                         let _e2576 = local_268;
                                                         let _e2577 = ((_e2574 - _e2573) / _e2576);
-                                                        phi_3619_ = select(0f, select(1f, _e2577, (_e2577 < 1f)), (0f < _e2577));
+                                                        phi_3675_ = select(0f, select(1f, _e2577, (_e2577 < 1f)), (0f < _e2577));
                                                     }
-                                                    let _e2872 = phi_3619_;
-                                                    phi_3620_ = _e2872;
+                                                    let _e2872 = phi_3675_;
+                                                    phi_3676_ = _e2872;
                                                 }
-                                                let _e2894 = phi_3620_;
-                                                phi_3621_ = _e2894;
+                                                let _e2894 = phi_3676_;
+                                                phi_3677_ = _e2894;
                                             }
-                                            let _e2916 = phi_3621_;
-                                            phi_5231_ = _e2403;
-                                            phi_3622_ = _e2916;
+                                            let _e2916 = phi_3677_;
+                                            phi_5333_ = _e2403;
+                                            phi_3678_ = _e2916;
                                         }
-                                        let _e3463 = phi_5231_;
-                                        let _e3465 = phi_3622_;
+                                        let _e3463 = phi_5333_;
+                                        let _e3465 = phi_3678_;
                                         local_323 = _e3465;
                                         let _e3466 = local_248;
                                         let _e3467 = (2304u + _e3466);
                                         local_324 = _e3467;
                                         if (_e3467 < 5888u) {
                                         } else {
-                                            phi_5209_ = true;
+                                            phi_5321_ = true;
                                             break;
                                         }
                                         let _e3469 = local_324;
@@ -4037,7 +4037,7 @@ fn function_() {
                                         local_326 = _e3476;
                                         if (_e3476 < 5888u) {
                                         } else {
-                                            phi_5209_ = true;
+                                            phi_5321_ = true;
                                             break;
                                         }
                                         let _e3478 = local_326;
@@ -4052,7 +4052,7 @@ fn function_() {
                                             local_328 = _e3509;
                                             if (_e3509 < 5888u) {
                                             } else {
-                                                phi_5209_ = true;
+                                                phi_5321_ = true;
                                                 break;
                                             }
                                             let _e3511 = local_328;
@@ -4086,7 +4086,7 @@ fn function_() {
                                             if _e3546 {
                                                 let _e3547 = local_269;
                                                 if _e3547 {
-                                                    phi_3717_ = type_19();
+                                                    phi_3773_ = type_19();
                                                 } else {
                                                     let _e3548 = local_335;
                                                     let _e3549 = local_480;
@@ -4100,26 +4100,26 @@ fn function_() {
                                                     local_342 = (_e3554 < _e3555);
                                                     let _e3557 = local_327;
                                                     if (_e3557 == 1f) {
-                                                        phi_3707_ = _e3516;
+                                                        phi_3763_ = _e3516;
                                                     } else {
                                                         let _e3559 = local_330;
                                                         let _e3560 = local_327;
-                                                        phi_3707_ = (_e3559 / _e3560);
+                                                        phi_3763_ = (_e3559 / _e3560);
                                                     }
-                                                    let _e3563 = phi_3707_;
+                                                    let _e3563 = phi_3763_;
                                                     let _e3564 = local_342;
                                                     let _e3565 = local_340;
                                                     let _e3567 = local_342;
                                                     let _e3568 = local_341;
                                                     let _e3569 = local_330;
-                                                    phi_3717_ = type_19(select(_e3563, _e3565, _e3564), select(_e3569, _e3568, _e3567));
+                                                    phi_3773_ = type_19(select(_e3563, _e3565, _e3564), select(_e3569, _e3568, _e3567));
                                                 }
-                                                let _e3573 = phi_3717_;
-                                                phi_3718_ = _e3573;
+                                                let _e3573 = phi_3773_;
+                                                phi_3774_ = _e3573;
                                             } else {
-                                                phi_3718_ = type_19();
+                                                phi_3774_ = type_19();
                                             }
-                                            let _e3575 = phi_3718_;
+                                            let _e3575 = phi_3774_;
                                             let _e3576 = local_339;
                                             let _e3577 = local_269;
                                             let _e3578 = select(true, _e3577, _e3576);
@@ -4133,23 +4133,23 @@ fn function_() {
                                                 local_344 = (_e3581 < _e3582);
                                                 let _e3584 = local_327;
                                                 if (_e3584 == 1f) {
-                                                    phi_3730_ = _e3516;
+                                                    phi_3786_ = _e3516;
                                                 } else {
                                                     let _e3586 = local_330;
                                                     let _e3587 = local_327;
-                                                    phi_3730_ = (_e3586 / _e3587);
+                                                    phi_3786_ = (_e3586 / _e3587);
                                                 }
-                                                let _e3590 = phi_3730_;
+                                                let _e3590 = phi_3786_;
                                                 let _e3591 = local_344;
                                                 let _e3592 = local_325;
                                                 let _e3594 = local_344;
                                                 let _e3595 = local_343;
                                                 let _e3596 = local_330;
-                                                phi_3741_ = type_19(select(_e3590, _e3592, _e3591), select(_e3596, _e3595, _e3594));
+                                                phi_3797_ = type_19(select(_e3590, _e3592, _e3591), select(_e3596, _e3595, _e3594));
                                             } else {
-                                                phi_3741_ = _e3575;
+                                                phi_3797_ = _e3575;
                                             }
-                                            let _e3600 = phi_3741_;
+                                            let _e3600 = phi_3797_;
                                             let _e3601 = local_481;
                                             let _e3602 = local_336;
                                             let _e3604 = local_264;
@@ -4168,8 +4168,8 @@ fn function_() {
                                             let _e3623 = local_264;
                                             let _e3624 = local_335;
                                             let _e3626 = local_334;
-                                            phi_3793_ = type_32(select(_e3606, _e3605, _e3604), select(_e3610, _e3609, _e3608), select(_e3614, _e3613, _e3612), ((_e3616 && select(_e3602, true, _e3601)) || (_e3619 && _e3620)), ((_e3623 && _e3624) || (_e3619 && _e3626)));
-                                            phi_3794_ = _e3600;
+                                            phi_3849_ = type_32(select(_e3606, _e3605, _e3604), select(_e3610, _e3609, _e3608), select(_e3614, _e3613, _e3612), ((_e3616 && select(_e3602, true, _e3601)) || (_e3619 && _e3620)), ((_e3623 && _e3624) || (_e3619 && _e3626)));
+                                            phi_3850_ = _e3600;
                                         } else {
                                             let _e3487 = local_246;
                                             let _e3488 = (1f - _e3487);
@@ -4181,23 +4181,23 @@ fn function_() {
                                             local_347 = (_e3491 < _e3488);
                                             let _e3493 = local_327;
                                             if (_e3493 == 1f) {
-                                                phi_3783_ = _e3488;
+                                                phi_3839_ = _e3488;
                                             } else {
                                                 let _e3495 = local_345;
                                                 let _e3496 = local_327;
-                                                phi_3783_ = (_e3495 / _e3496);
+                                                phi_3839_ = (_e3495 / _e3496);
                                             }
-                                            let _e3499 = phi_3783_;
+                                            let _e3499 = phi_3839_;
                                             let _e3500 = local_347;
                                             let _e3501 = local_325;
                                             let _e3503 = local_347;
                                             let _e3504 = local_346;
                                             let _e3505 = local_345;
-                                            phi_3793_ = _e2407;
-                                            phi_3794_ = type_19(select(_e3499, _e3501, _e3500), select(_e3505, _e3504, _e3503));
+                                            phi_3849_ = _e2407;
+                                            phi_3850_ = type_19(select(_e3499, _e3501, _e3500), select(_e3505, _e3504, _e3503));
                                         }
-                                        let _e3631 = phi_3793_;
-                                        let _e3633 = phi_3794_;
+                                        let _e3631 = phi_3849_;
+                                        let _e3633 = phi_3850_;
                                         local_348 = _e3633.member;
                                         local_349 = _e3633.member_1;
                                         let _e3636 = local_253;
@@ -4207,7 +4207,7 @@ fn function_() {
                                         local_351 = _e3639;
                                         if (_e3639 < 5888u) {
                                         } else {
-                                            phi_5209_ = true;
+                                            phi_5321_ = true;
                                             break;
                                         }
                                         let _e3641 = local_351;
@@ -4224,7 +4224,7 @@ fn function_() {
                                         local_353 = _e3655;
                                         if (_e3655 < 5888u) {
                                         } else {
-                                            phi_5209_ = true;
+                                            phi_5321_ = true;
                                             break;
                                         }
                                         let _e3657 = local_353;
@@ -4241,7 +4241,7 @@ fn function_() {
                                         local_355 = _e3671;
                                         if (_e3671 < 5888u) {
                                         } else {
-                                            phi_5209_ = true;
+                                            phi_5321_ = true;
                                             break;
                                         }
                                         let _e3673 = local_355;
@@ -4269,102 +4269,102 @@ fn function_() {
                                             let _e3706 = local_356;
                                             let _e3707 = local_250;
                                             let _e3708 = select(_e3707, 0f, _e3706);
-                                            phi_3879_ = select(select(u32(_e3708), 0u, !((_e3708 >= 0f))), 4294967295u, (_e3708 > 4294967000f));
-                                            phi_3880_ = _e3708;
-                                            phi_3881_ = select(_e3704, f32((_e3700 + 1u)), _e3703);
-                                            phi_3882_ = (_e3697 || _e3698);
+                                            phi_3935_ = select(select(u32(_e3708), 0u, !((_e3708 >= 0f))), 4294967295u, (_e3708 > 4294967000f));
+                                            phi_3936_ = _e3708;
+                                            phi_3937_ = select(_e3704, f32((_e3700 + 1u)), _e3703);
+                                            phi_3938_ = (_e3697 || _e3698);
                                         } else {
-                                            phi_3879_ = _e2411;
-                                            phi_3880_ = _e2413;
-                                            phi_3881_ = _e2415;
-                                            phi_3882_ = _e2417;
+                                            phi_3935_ = _e2411;
+                                            phi_3936_ = _e2413;
+                                            phi_3937_ = _e2415;
+                                            phi_3938_ = _e2417;
                                         }
-                                        let _e3716 = phi_3879_;
-                                        let _e3718 = phi_3880_;
-                                        let _e3720 = phi_3881_;
-                                        let _e3722 = phi_3882_;
-                                        phi_5211_ = _e3463;
-                                        phi_3883_ = _e3692;
-                                        phi_3884_ = _e3631;
-                                        phi_3885_ = _e3716;
-                                        phi_3886_ = _e3718;
-                                        phi_3887_ = _e3720;
-                                        phi_3888_ = _e3722;
-                                        phi_3889_ = array<f32, 3>(_e3684, _e3685, select(_e3682, (_e3679 + (_e3677 * bitcast<f32>(_e3675))), _e3681));
+                                        let _e3716 = phi_3935_;
+                                        let _e3718 = phi_3936_;
+                                        let _e3720 = phi_3937_;
+                                        let _e3722 = phi_3938_;
+                                        phi_5323_ = _e3463;
+                                        phi_3939_ = _e3692;
+                                        phi_3940_ = _e3631;
+                                        phi_3941_ = _e3716;
+                                        phi_3942_ = _e3718;
+                                        phi_3943_ = _e3720;
+                                        phi_3944_ = _e3722;
+                                        phi_3945_ = array<f32, 3>(_e3684, _e3685, select(_e3682, (_e3679 + (_e3677 * bitcast<f32>(_e3675))), _e3681));
                                     } else {
-                                        phi_5211_ = _e2403;
-                                        phi_3883_ = _e2405;
-                                        phi_3884_ = _e2407;
-                                        phi_3885_ = _e2411;
-                                        phi_3886_ = _e2413;
-                                        phi_3887_ = _e2415;
-                                        phi_3888_ = _e2417;
-                                        phi_3889_ = _e2419;
+                                        phi_5323_ = _e2403;
+                                        phi_3939_ = _e2405;
+                                        phi_3940_ = _e2407;
+                                        phi_3941_ = _e2411;
+                                        phi_3942_ = _e2413;
+                                        phi_3943_ = _e2415;
+                                        phi_3944_ = _e2417;
+                                        phi_3945_ = _e2419;
                                     }
-                                    let _e3724 = phi_5211_;
-                                    let _e3726 = phi_3883_;
-                                    let _e3728 = phi_3884_;
-                                    let _e3730 = phi_3885_;
-                                    let _e3732 = phi_3886_;
-                                    let _e3734 = phi_3887_;
-                                    let _e3736 = phi_3888_;
-                                    let _e3738 = phi_3889_;
+                                    let _e3724 = phi_5323_;
+                                    let _e3726 = phi_3939_;
+                                    let _e3728 = phi_3940_;
+                                    let _e3730 = phi_3941_;
+                                    let _e3732 = phi_3942_;
+                                    let _e3734 = phi_3943_;
+                                    let _e3736 = phi_3944_;
+                                    let _e3738 = phi_3945_;
                                     let _e3739 = local_248;
-                                    phi_5210_ = _e3724;
-                                    phi_2188_ = _e3726;
-                                    phi_2191_ = _e3728;
-                                    phi_2193_ = (_e3739 + 1u);
-                                    phi_2195_ = _e3730;
-                                    phi_2197_ = _e3732;
-                                    phi_2199_ = _e3734;
-                                    phi_2201_ = _e3736;
-                                    phi_2203_ = _e3738;
+                                    phi_5322_ = _e3724;
+                                    phi_2244_ = _e3726;
+                                    phi_2247_ = _e3728;
+                                    phi_2249_ = (_e3739 + 1u);
+                                    phi_2251_ = _e3730;
+                                    phi_2253_ = _e3732;
+                                    phi_2255_ = _e3734;
+                                    phi_2257_ = _e3736;
+                                    phi_2259_ = _e3738;
                                 } else {
-                                    phi_5210_ = _e2403;
-                                    phi_2188_ = f32();
-                                    phi_2191_ = type_32();
-                                    phi_2193_ = u32();
-                                    phi_2195_ = u32();
-                                    phi_2197_ = f32();
-                                    phi_2199_ = f32();
-                                    phi_2201_ = bool();
-                                    phi_2203_ = array<f32, 3>();
+                                    phi_5322_ = _e2403;
+                                    phi_2244_ = f32();
+                                    phi_2247_ = type_32();
+                                    phi_2249_ = u32();
+                                    phi_2251_ = u32();
+                                    phi_2253_ = f32();
+                                    phi_2255_ = f32();
+                                    phi_2257_ = bool();
+                                    phi_2259_ = array<f32, 3>();
                                 }
-                                let _e3742 = phi_5210_;
-                                let _e3744 = phi_2188_;
-                                let _e3746 = phi_2191_;
-                                let _e3748 = phi_2193_;
-                                let _e3750 = phi_2195_;
-                                let _e3752 = phi_2197_;
-                                let _e3754 = phi_2199_;
-                                let _e3756 = phi_2201_;
-                                let _e3758 = phi_2203_;
+                                let _e3742 = phi_5322_;
+                                let _e3744 = phi_2244_;
+                                let _e3746 = phi_2247_;
+                                let _e3748 = phi_2249_;
+                                let _e3750 = phi_2251_;
+                                let _e3752 = phi_2253_;
+                                let _e3754 = phi_2255_;
+                                let _e3756 = phi_2257_;
+                                let _e3758 = phi_2259_;
                                 continue;
                                 continuing {
                                     let _e3759 = local_254;
-                                    phi_5108_ = _e3742;
-                                    phi_2187_ = _e3744;
-                                    phi_2190_ = _e3746;
-                                    phi_2192_ = _e3748;
-                                    phi_2194_ = _e3750;
-                                    phi_2196_ = _e3752;
-                                    phi_2198_ = _e3754;
-                                    phi_2200_ = _e3756;
-                                    phi_2202_ = _e3758;
-                                    phi_5209_ = _e3742;
+                                    phi_5218_ = _e3742;
+                                    phi_2243_ = _e3744;
+                                    phi_2246_ = _e3746;
+                                    phi_2248_ = _e3748;
+                                    phi_2250_ = _e3750;
+                                    phi_2252_ = _e3752;
+                                    phi_2254_ = _e3754;
+                                    phi_2256_ = _e3756;
+                                    phi_2258_ = _e3758;
+                                    phi_5321_ = _e3742;
                                     break if !(_e3759);
                                 }
                             }
-                            let _e3762 = phi_5209_;
-                            phi_5323_ = _e3762;
+                            let _e3762 = phi_5321_;
+                            phi_5435_ = _e3762;
                             if _e3762 {
                                 break;
                             }
                             let _e3763 = local_253;
                             local_357 = _e3763[0];
-                            phi_3893_ = 0u;
+                            phi_3949_ = 0u;
                             loop {
-                                let _e3766 = phi_3893_;
+                                let _e3766 = phi_3949_;
                                 local_358 = _e3766;
                                 let _e3767 = local_358;
                                 let _e3768 = (_e3767 < 1u);
@@ -4378,36 +4378,36 @@ fn function_() {
                                     local_361 = bitcast<u32>(_e3772);
                                     if (_e3771 < 5888u) {
                                     } else {
-                                        phi_5285_ = true;
+                                        phi_5397_ = true;
                                         break;
                                     }
                                     let _e3775 = local_360;
                                     let _e3777 = local_361;
                                     global_15[_e3775] = _e3777;
                                     let _e3778 = local_358;
-                                    phi_3894_ = (_e3778 + 1u);
+                                    phi_3950_ = (_e3778 + 1u);
                                 } else {
-                                    phi_3894_ = u32();
+                                    phi_3950_ = u32();
                                 }
-                                let _e3781 = phi_3894_;
+                                let _e3781 = phi_3950_;
                                 continue;
                                 continuing {
                                     let _e3782 = local_359;
-                                    phi_3893_ = _e3781;
-                                    phi_5285_ = _e3762;
+                                    phi_3949_ = _e3781;
+                                    phi_5397_ = _e3762;
                                     break if !(_e3782);
                                 }
                             }
-                            let _e3785 = phi_5285_;
-                            phi_5323_ = _e3785;
+                            let _e3785 = phi_5397_;
+                            phi_5435_ = _e3785;
                             if _e3785 {
                                 break;
                             }
                             let _e3786 = local_253;
                             local_362 = _e3786[1];
-                            phi_3914_ = 0u;
+                            phi_3970_ = 0u;
                             loop {
-                                let _e3789 = phi_3914_;
+                                let _e3789 = phi_3970_;
                                 local_363 = _e3789;
                                 let _e3790 = local_363;
                                 let _e3791 = (_e3790 < 1u);
@@ -4421,36 +4421,36 @@ fn function_() {
                                     local_366 = _e3797;
                                     if (_e3797 < 5888u) {
                                     } else {
-                                        phi_5288_ = true;
+                                        phi_5400_ = true;
                                         break;
                                     }
                                     let _e3799 = local_366;
                                     let _e3801 = local_365;
                                     global_15[_e3799] = _e3801;
                                     let _e3802 = local_363;
-                                    phi_3915_ = (_e3802 + 1u);
+                                    phi_3971_ = (_e3802 + 1u);
                                 } else {
-                                    phi_3915_ = u32();
+                                    phi_3971_ = u32();
                                 }
-                                let _e3805 = phi_3915_;
+                                let _e3805 = phi_3971_;
                                 continue;
                                 continuing {
                                     let _e3806 = local_364;
-                                    phi_3914_ = _e3805;
-                                    phi_5288_ = _e3785;
+                                    phi_3970_ = _e3805;
+                                    phi_5400_ = _e3785;
                                     break if !(_e3806);
                                 }
                             }
-                            let _e3809 = phi_5288_;
-                            phi_5323_ = _e3809;
+                            let _e3809 = phi_5400_;
+                            phi_5435_ = _e3809;
                             if _e3809 {
                                 break;
                             }
                             let _e3810 = local_253;
                             local_367 = _e3810[2];
-                            phi_3935_ = 0u;
+                            phi_3991_ = 0u;
                             loop {
-                                let _e3813 = phi_3935_;
+                                let _e3813 = phi_3991_;
                                 local_368 = _e3813;
                                 let _e3814 = local_368;
                                 let _e3815 = (_e3814 < 1u);
@@ -4464,34 +4464,34 @@ fn function_() {
                                     local_371 = _e3821;
                                     if (_e3821 < 5888u) {
                                     } else {
-                                        phi_5291_ = true;
+                                        phi_5403_ = true;
                                         break;
                                     }
                                     let _e3823 = local_371;
                                     let _e3825 = local_370;
                                     global_15[_e3823] = _e3825;
                                     let _e3826 = local_368;
-                                    phi_3936_ = (_e3826 + 1u);
+                                    phi_3992_ = (_e3826 + 1u);
                                 } else {
-                                    phi_3936_ = u32();
+                                    phi_3992_ = u32();
                                 }
-                                let _e3829 = phi_3936_;
+                                let _e3829 = phi_3992_;
                                 continue;
                                 continuing {
                                     let _e3830 = local_369;
-                                    phi_3935_ = _e3829;
-                                    phi_5291_ = _e3809;
+                                    phi_3991_ = _e3829;
+                                    phi_5403_ = _e3809;
                                     break if !(_e3830);
                                 }
                             }
-                            let _e3833 = phi_5291_;
-                            phi_5323_ = _e3833;
+                            let _e3833 = phi_5403_;
+                            phi_5435_ = _e3833;
                             if _e3833 {
                                 break;
                             }
-                            phi_3955_ = 0u;
+                            phi_4011_ = 0u;
                             loop {
-                                let _e3835 = phi_3955_;
+                                let _e3835 = phi_4011_;
                                 local_372 = _e3835;
                                 let _e3836 = local_372;
                                 let _e3837 = (_e3836 < 1u);
@@ -4505,34 +4505,34 @@ fn function_() {
                                     local_375 = _e3843;
                                     if (_e3843 < 5888u) {
                                     } else {
-                                        phi_5294_ = true;
+                                        phi_5406_ = true;
                                         break;
                                     }
                                     let _e3845 = local_375;
                                     let _e3847 = local_374;
                                     global_15[_e3845] = _e3847;
                                     let _e3848 = local_372;
-                                    phi_3956_ = (_e3848 + 1u);
+                                    phi_4012_ = (_e3848 + 1u);
                                 } else {
-                                    phi_3956_ = u32();
+                                    phi_4012_ = u32();
                                 }
-                                let _e3851 = phi_3956_;
+                                let _e3851 = phi_4012_;
                                 continue;
                                 continuing {
                                     let _e3852 = local_373;
-                                    phi_3955_ = _e3851;
-                                    phi_5294_ = _e3833;
+                                    phi_4011_ = _e3851;
+                                    phi_5406_ = _e3833;
                                     break if !(_e3852);
                                 }
                             }
-                            let _e3855 = phi_5294_;
-                            phi_5323_ = _e3855;
+                            let _e3855 = phi_5406_;
+                            phi_5435_ = _e3855;
                             if _e3855 {
                                 break;
                             }
-                            phi_3976_ = 0u;
+                            phi_4032_ = 0u;
                             loop {
-                                let _e3857 = phi_3976_;
+                                let _e3857 = phi_4032_;
                                 local_376 = _e3857;
                                 let _e3858 = local_376;
                                 let _e3859 = (_e3858 < 1u);
@@ -4546,7 +4546,7 @@ fn function_() {
                                     local_379 = _e3865;
                                     if (_e3865 < 5888u) {
                                     } else {
-                                        phi_5297_ = true;
+                                        phi_5409_ = true;
                                         break;
                                     }
                                     let _e3867 = local_379;
@@ -4560,7 +4560,7 @@ fn function_() {
                                     local_381 = _e3875;
                                     if (_e3875 < 5888u) {
                                     } else {
-                                        phi_5297_ = true;
+                                        phi_5409_ = true;
                                         break;
                                     }
                                     let _e3877 = local_381;
@@ -4574,7 +4574,7 @@ fn function_() {
                                     local_383 = _e3885;
                                     if (_e3885 < 5888u) {
                                     } else {
-                                        phi_5297_ = true;
+                                        phi_5409_ = true;
                                         break;
                                     }
                                     let _e3887 = local_383;
@@ -4590,7 +4590,7 @@ fn function_() {
                                     local_386 = _e3900;
                                     if (_e3900 < 5888u) {
                                     } else {
-                                        phi_5297_ = true;
+                                        phi_5409_ = true;
                                         break;
                                     }
                                     let _e3902 = local_386;
@@ -4598,27 +4598,27 @@ fn function_() {
                                     let _e3905 = local_385;
                                     global_15[_e3902] = (_e3904 | _e3905);
                                     let _e3907 = local_376;
-                                    phi_3977_ = (_e3907 + 1u);
+                                    phi_4033_ = (_e3907 + 1u);
                                 } else {
-                                    phi_3977_ = u32();
+                                    phi_4033_ = u32();
                                 }
-                                let _e3910 = phi_3977_;
+                                let _e3910 = phi_4033_;
                                 continue;
                                 continuing {
                                     let _e3911 = local_377;
-                                    phi_3976_ = _e3910;
-                                    phi_5297_ = _e3855;
+                                    phi_4032_ = _e3910;
+                                    phi_5409_ = _e3855;
                                     break if !(_e3911);
                                 }
                             }
-                            let _e3914 = phi_5297_;
-                            phi_5323_ = _e3914;
+                            let _e3914 = phi_5409_;
+                            phi_5435_ = _e3914;
                             if _e3914 {
                                 break;
                             }
-                            phi_4032_ = 0u;
+                            phi_4088_ = 0u;
                             loop {
-                                let _e3916 = phi_4032_;
+                                let _e3916 = phi_4088_;
                                 local_387 = _e3916;
                                 let _e3917 = local_387;
                                 let _e3918 = (_e3917 < 1u);
@@ -4632,13 +4632,13 @@ fn function_() {
                                         let _e3946 = local_251;
                                         let _e3948 = local_251;
                                         let _e3951 = local_251;
-                                        phi_4092_ = false;
-                                        phi_4093_ = select(select(u32(_e3946), 0u, !((_e3948 >= 0f))), 4294967295u, (_e3951 > 4294967000f));
+                                        phi_4148_ = false;
+                                        phi_4149_ = select(select(u32(_e3946), 0u, !((_e3948 >= 0f))), 4294967295u, (_e3951 > 4294967000f));
                                     } else {
                                         let _e3923 = local_388;
                                         if _e3923 {
                                         } else {
-                                            phi_5300_ = true;
+                                            phi_5412_ = true;
                                             break;
                                         }
                                         let _e3924 = local_387;
@@ -4647,7 +4647,7 @@ fn function_() {
                                             let _e3927 = local_388;
                                             if _e3927 {
                                             } else {
-                                                phi_5300_ = true;
+                                                phi_5412_ = true;
                                                 break;
                                             }
                                             let _e3928 = local_387;
@@ -4657,42 +4657,42 @@ fn function_() {
                                                 let _e3933 = local_388;
                                                 if _e3933 {
                                                 } else {
-                                                    phi_5300_ = true;
+                                                    phi_5412_ = true;
                                                     break;
                                                 }
                                                 let _e3934 = local_489[_e3928];
-                                                phi_4081_ = (_e3934 + 1u);
+                                                phi_4137_ = (_e3934 + 1u);
                                             } else {
-                                                phi_4081_ = _e2158;
+                                                phi_4137_ = _e2158;
                                             }
-                                            let _e3937 = phi_4081_;
+                                            let _e3937 = phi_4137_;
                                             let _e3938 = local_388;
                                             if _e3938 {
                                             } else {
-                                                phi_5300_ = true;
+                                                phi_5412_ = true;
                                                 break;
                                             }
                                             let _e3939 = local_489[_e3928];
                                             let _e3940 = local_478;
-                                            phi_4090_ = (_e3939 == _e3940);
-                                            phi_4091_ = _e3937;
+                                            phi_4146_ = (_e3939 == _e3940);
+                                            phi_4147_ = _e3937;
                                         } else {
-                                            phi_4090_ = false;
-                                            phi_4091_ = 0u;
+                                            phi_4146_ = false;
+                                            phi_4147_ = 0u;
                                         }
-                                        let _e3943 = phi_4090_;
-                                        let _e3945 = phi_4091_;
-                                        phi_4092_ = _e3943;
-                                        phi_4093_ = _e3945;
+                                        let _e3943 = phi_4146_;
+                                        let _e3945 = phi_4147_;
+                                        phi_4148_ = _e3943;
+                                        phi_4149_ = _e3945;
                                     }
-                                    let _e3956 = phi_4092_;
-                                    let _e3958 = phi_4093_;
+                                    let _e3956 = phi_4148_;
+                                    let _e3958 = phi_4149_;
                                     local_390 = _e3956;
                                     local_391 = _e3958;
                                     let _e3959 = local_388;
                                     if _e3959 {
                                     } else {
-                                        phi_5300_ = true;
+                                        phi_5412_ = true;
                                         break;
                                     }
                                     let _e3960 = local_387;
@@ -4703,7 +4703,7 @@ fn function_() {
                                         local_392 = _e3964;
                                         if (_e3964 < 5888u) {
                                         } else {
-                                            phi_5300_ = true;
+                                            phi_5412_ = true;
                                             break;
                                         }
                                         let _e3966 = local_392;
@@ -4716,28 +4716,28 @@ fn function_() {
                                     local_393 = _e3972;
                                     if (_e3972 < 5888u) {
                                     } else {
-                                        phi_5300_ = true;
+                                        phi_5412_ = true;
                                         break;
                                     }
                                     let _e3974 = local_393;
                                     let _e3976 = local_390;
                                     global_15[_e3974] = select(0u, 1u, _e3976);
                                     let _e3978 = local_387;
-                                    phi_4033_ = (_e3978 + 1u);
+                                    phi_4089_ = (_e3978 + 1u);
                                 } else {
-                                    phi_4033_ = u32();
+                                    phi_4089_ = u32();
                                 }
-                                let _e3981 = phi_4033_;
+                                let _e3981 = phi_4089_;
                                 continue;
                                 continuing {
                                     let _e3982 = local_388;
-                                    phi_4032_ = _e3981;
-                                    phi_5300_ = _e3914;
+                                    phi_4088_ = _e3981;
+                                    phi_5412_ = _e3914;
                                     break if !(_e3982);
                                 }
                             }
-                            let _e3985 = phi_5300_;
-                            phi_5323_ = _e3985;
+                            let _e3985 = phi_5412_;
+                            phi_5435_ = _e3985;
                             if _e3985 {
                                 break;
                             }
@@ -4754,44 +4754,44 @@ fn function_() {
                                     local_394 = _e3995;
                                     if _e3995 {
                                         let _e3996 = local_1;
-                                        phi_4140_ = type_17(1u, _e3996);
+                                        phi_4196_ = type_17(1u, _e3996);
                                     } else {
-                                        phi_4140_ = type_17();
+                                        phi_4196_ = type_17();
                                     }
-                                    let _e3999 = phi_4140_;
+                                    let _e3999 = phi_4196_;
                                     let _e4000 = local_394;
-                                    phi_4142_ = _e3999;
-                                    phi_4143_ = select(true, false, _e4000);
+                                    phi_4198_ = _e3999;
+                                    phi_4199_ = select(true, false, _e4000);
                                 } else {
-                                    phi_4142_ = type_17();
-                                    phi_4143_ = true;
+                                    phi_4198_ = type_17();
+                                    phi_4199_ = true;
                                 }
-                                let _e4003 = phi_4142_;
-                                let _e4005 = phi_4143_;
-                                phi_4144_ = _e4003;
-                                phi_4145_ = _e4005;
+                                let _e4003 = phi_4198_;
+                                let _e4005 = phi_4199_;
+                                phi_4200_ = _e4003;
+                                phi_4201_ = _e4005;
                             } else {
-                                phi_4144_ = type_17();
-                                phi_4145_ = true;
+                                phi_4200_ = type_17();
+                                phi_4201_ = true;
                             }
-                            let _e4007 = phi_4144_;
-                            let _e4009 = phi_4145_;
+                            let _e4007 = phi_4200_;
+                            let _e4009 = phi_4201_;
                             if _e4009 {
-                                phi_4150_ = type_17(0u, type_17().member_1);
+                                phi_4206_ = type_17(0u, type_17().member_1);
                             } else {
-                                phi_4150_ = _e4007;
+                                phi_4206_ = _e4007;
                             }
-                            let _e4014 = phi_4150_;
+                            let _e4014 = phi_4206_;
                             local_395 = _e4014.member_1;
                             if (bitcast<i32>(_e4014.member) != 0i) {
                                 let _e4051 = local_395;
                                 let _e4053 = local_395;
                                 local_396 = select(firstTrailingBit(_e4051), 32u, (_e4053 == 0u));
-                                phi_4162_ = 0u;
-                                phi_4165_ = 256u;
+                                phi_4218_ = 0u;
+                                phi_4221_ = 256u;
                                 loop {
-                                    let _e4057 = phi_4162_;
-                                    let _e4059 = phi_4165_;
+                                    let _e4057 = phi_4218_;
+                                    let _e4059 = phi_4221_;
                                     local_397 = _e4057;
                                     local_398 = _e4059;
                                     let _e4060 = local_398;
@@ -4814,16 +4814,16 @@ fn function_() {
                                             local_402 = _e4075;
                                             if (_e4075 < 5888u) {
                                             } else {
-                                                phi_5317_ = true;
+                                                phi_5429_ = true;
                                                 break;
                                             }
                                             let _e4077 = local_402;
                                             let _e4079 = global_15[_e4077];
-                                            phi_4189_ = _e4079;
+                                            phi_4245_ = _e4079;
                                         } else {
-                                            phi_4189_ = 0u;
+                                            phi_4245_ = 0u;
                                         }
-                                        let _e4081 = phi_4189_;
+                                        let _e4081 = phi_4245_;
                                         let _e4082 = subgroupMax(_e4081);
                                         local_403 = _e4082;
                                         let _e4083 = local_401;
@@ -4837,7 +4837,7 @@ fn function_() {
                                                 local_404 = _e4094;
                                                 if (_e4094 < 5888u) {
                                                 } else {
-                                                    phi_5317_ = true;
+                                                    phi_5429_ = true;
                                                     break;
                                                 }
                                                 let _e4096 = local_404;
@@ -4851,25 +4851,25 @@ fn function_() {
                                         let _e4101 = local_398;
                                         let _e4104 = local_397;
                                         let _e4105 = local_396;
-                                        phi_4163_ = (_e4104 + _e4105);
-                                        phi_4166_ = (_e4101 >> bitcast<u32>((_e4099 & 31u)));
+                                        phi_4219_ = (_e4104 + _e4105);
+                                        phi_4222_ = (_e4101 >> bitcast<u32>((_e4099 & 31u)));
                                     } else {
-                                        phi_4163_ = u32();
-                                        phi_4166_ = u32();
+                                        phi_4219_ = u32();
+                                        phi_4222_ = u32();
                                     }
-                                    let _e4108 = phi_4163_;
-                                    let _e4110 = phi_4166_;
+                                    let _e4108 = phi_4219_;
+                                    let _e4110 = phi_4222_;
                                     continue;
                                     continuing {
                                         let _e4111 = local_399;
-                                        phi_4162_ = _e4108;
-                                        phi_4165_ = _e4110;
-                                        phi_5317_ = _e3985;
+                                        phi_4218_ = _e4108;
+                                        phi_4221_ = _e4110;
+                                        phi_5429_ = _e3985;
                                         break if !(_e4111);
                                     }
                                 }
-                                let _e4114 = phi_5317_;
-                                phi_5323_ = _e4114;
+                                let _e4114 = phi_5429_;
+                                phi_5435_ = _e4114;
                                 if _e4114 {
                                     break;
                                 }
@@ -4887,25 +4887,25 @@ fn function_() {
                                     local_406 = _e4130;
                                     if (_e4130 < 5888u) {
                                     } else {
-                                        phi_5323_ = true;
+                                        phi_5435_ = true;
                                         break;
                                     }
                                     let _e4132 = local_406;
                                     let _e4134 = global_15[_e4132];
-                                    phi_4232_ = _e4134;
+                                    phi_4316_ = _e4134;
                                 } else {
-                                    phi_4232_ = 0u;
+                                    phi_4316_ = 0u;
                                 }
-                                let _e4136 = phi_4232_;
+                                let _e4136 = phi_4316_;
                                 let _e4137 = subgroupMax(_e4136);
                                 storageBarrier();
                                 workgroupBarrier();
-                                phi_5326_ = _e4114;
-                                phi_4285_ = _e4137;
+                                phi_5438_ = _e4114;
+                                phi_4397_ = _e4137;
                             } else {
-                                phi_4237_ = 128u;
+                                phi_4349_ = 128u;
                                 loop {
-                                    let _e4020 = phi_4237_;
+                                    let _e4020 = phi_4349_;
                                     local_407 = _e4020;
                                     let _e4021 = local_407;
                                     let _e4022 = (_e4021 > 0u);
@@ -4917,7 +4917,7 @@ fn function_() {
                                             let _e4026 = local_59;
                                             if _e4026 {
                                             } else {
-                                                phi_5307_ = true;
+                                                phi_5419_ = true;
                                                 break;
                                             }
                                             let _e4027 = global_15[_e894];
@@ -4928,7 +4928,7 @@ fn function_() {
                                             local_410 = _e4030;
                                             if (_e4030 < 5888u) {
                                             } else {
-                                                phi_5307_ = true;
+                                                phi_5419_ = true;
                                                 break;
                                             }
                                             let _e4032 = local_410;
@@ -4939,7 +4939,7 @@ fn function_() {
                                             let _e4039 = local_59;
                                             if _e4039 {
                                             } else {
-                                                phi_5307_ = true;
+                                                phi_5419_ = true;
                                                 break;
                                             }
                                             let _e4040 = local_484;
@@ -4948,67 +4948,67 @@ fn function_() {
                                         storageBarrier();
                                         workgroupBarrier();
                                         let _e4041 = local_407;
-                                        phi_4238_ = (_e4041 / 2u);
+                                        phi_4350_ = (_e4041 / 2u);
                                     } else {
-                                        phi_4238_ = u32();
+                                        phi_4350_ = u32();
                                     }
-                                    let _e4044 = phi_4238_;
+                                    let _e4044 = phi_4350_;
                                     continue;
                                     continuing {
                                         let _e4045 = local_408;
-                                        phi_4237_ = _e4044;
-                                        phi_5307_ = _e3985;
+                                        phi_4349_ = _e4044;
+                                        phi_5419_ = _e3985;
                                         break if !(_e4045);
                                     }
                                 }
-                                let _e4048 = phi_5307_;
-                                phi_5323_ = _e4048;
+                                let _e4048 = phi_5419_;
+                                phi_5435_ = _e4048;
                                 if _e4048 {
                                     break;
                                 }
                                 let _e4050 = global_15[4352u];
                                 storageBarrier();
                                 workgroupBarrier();
-                                phi_5326_ = _e4048;
-                                phi_4285_ = _e4050;
+                                phi_5438_ = _e4048;
+                                phi_4397_ = _e4050;
                             }
-                            let _e4139 = phi_5326_;
-                            let _e4141 = phi_4285_;
+                            let _e4139 = phi_5438_;
+                            let _e4141 = phi_4397_;
                             let _e4142 = local_98;
-                            phi_5325_ = _e4139;
-                            phi_4287_ = (_e4142 + 256u);
-                            phi_4288_ = _e4141;
+                            phi_5437_ = _e4139;
+                            phi_4399_ = (_e4142 + 256u);
+                            phi_4400_ = _e4141;
                         }
-                        let _e4145 = phi_5325_;
-                        let _e4147 = phi_4287_;
-                        let _e4149 = phi_4288_;
+                        let _e4145 = phi_5437_;
+                        let _e4147 = phi_4399_;
+                        let _e4149 = phi_4400_;
                         let _e4150 = local_100;
-                        phi_5324_ = _e4145;
-                        phi_758_ = _e4147;
-                        phi_761_ = _e4149;
-                        phi_4290_ = select(true, false, _e4150);
+                        phi_5436_ = _e4145;
+                        phi_814_ = _e4147;
+                        phi_817_ = _e4149;
+                        phi_4402_ = select(true, false, _e4150);
                     } else {
-                        phi_5324_ = _e1180;
-                        phi_758_ = u32();
-                        phi_761_ = u32();
-                        phi_4290_ = false;
+                        phi_5436_ = _e1180;
+                        phi_814_ = u32();
+                        phi_817_ = u32();
+                        phi_4402_ = false;
                     }
-                    let _e4153 = phi_5324_;
-                    let _e4155 = phi_758_;
-                    let _e4157 = phi_761_;
-                    let _e4159 = phi_4290_;
+                    let _e4153 = phi_5436_;
+                    let _e4155 = phi_814_;
+                    let _e4157 = phi_817_;
+                    let _e4159 = phi_4402_;
                     local_411 = _e4159;
                     continue;
                     continuing {
                         let _e4160 = local_411;
-                        phi_5021_ = _e4153;
-                        phi_757_ = _e4155;
-                        phi_760_ = _e4157;
-                        phi_5323_ = _e4153;
+                        phi_5131_ = _e4153;
+                        phi_813_ = _e4155;
+                        phi_816_ = _e4157;
+                        phi_5435_ = _e4153;
                         break if !(_e4160);
                     }
                 }
-                let _e4163 = phi_5323_;
+                let _e4163 = phi_5435_;
                 if _e4163 {
                     break;
                 }
@@ -5029,20 +5029,20 @@ fn function_() {
                     if _e4169 {
                         let _e4170 = local_83;
                         let _e4171 = local_18;
-                        phi_4351_ = (_e4170 < _e4171);
+                        phi_4463_ = (_e4170 < _e4171);
                     } else {
-                        phi_4351_ = bool();
+                        phi_4463_ = bool();
                     }
-                    let _e4174 = phi_4351_;
+                    let _e4174 = phi_4463_;
                     let _e4175 = local_412;
-                    phi_4353_ = _e4174;
-                    phi_4354_ = select(true, false, _e4175);
+                    phi_4465_ = _e4174;
+                    phi_4466_ = select(true, false, _e4175);
                 } else {
-                    phi_4353_ = bool();
-                    phi_4354_ = true;
+                    phi_4465_ = bool();
+                    phi_4466_ = true;
                 }
-                let _e4178 = phi_4353_;
-                let _e4180 = phi_4354_;
+                let _e4178 = phi_4465_;
+                let _e4180 = phi_4466_;
                 if select(_e4178, false, _e4180) {
                     let _e4182 = local_83;
                     let _e4183 = local_17;
@@ -5197,11 +5197,11 @@ fn function_() {
                     local_434 = _e4287;
                     if (_e4287 > 0.000001f) {
                         let _e4289 = local_434;
-                        phi_4511_ = (1f / _e4289);
+                        phi_4623_ = (1f / _e4289);
                     } else {
-                        phi_4511_ = 0f;
+                        phi_4623_ = 0f;
                     }
-                    let _e4292 = phi_4511_;
+                    let _e4292 = phi_4623_;
                     local_435 = _e4292;
                     let _e4293 = local;
                     if (_e4293 < 5888u) {
@@ -5276,13 +5276,13 @@ fn function_() {
                 }
                 storageBarrier();
                 workgroupBarrier();
-                phi_4576_ = _e603;
-                phi_4579_ = 0u;
-                phi_4581_ = 0u;
+                phi_4688_ = _e603;
+                phi_4691_ = 0u;
+                phi_4693_ = 0u;
                 loop {
-                    let _e4350 = phi_4576_;
-                    let _e4352 = phi_4579_;
-                    let _e4354 = phi_4581_;
+                    let _e4350 = phi_4688_;
+                    let _e4352 = phi_4691_;
+                    let _e4354 = phi_4693_;
                     local_447 = _e4350;
                     local_448 = _e4352;
                     local_449 = _e4354;
@@ -5296,7 +5296,7 @@ fn function_() {
                         local_451 = _e4360;
                         if (_e4360 < 5888u) {
                         } else {
-                            phi_5328_ = true;
+                            phi_5440_ = true;
                             break;
                         }
                         let _e4362 = local_451;
@@ -5304,7 +5304,7 @@ fn function_() {
                         local_452 = _e4364;
                         let _e4365 = local_37;
                         if _e4365 {
-                            phi_5328_ = true;
+                            phi_5440_ = true;
                             break;
                         }
                         let _e4366 = local_447;
@@ -5313,7 +5313,7 @@ fn function_() {
                         local_453 = (_e4369 + (_e4366 % _e4367));
                         let _e4371 = local_37;
                         if _e4371 {
-                            phi_5328_ = true;
+                            phi_5440_ = true;
                             break;
                         }
                         let _e4372 = local_447;
@@ -5330,20 +5330,20 @@ fn function_() {
                             if _e4382 {
                                 let _e4383 = local_454;
                                 let _e4384 = local_18;
-                                phi_4654_ = (_e4383 < _e4384);
+                                phi_4766_ = (_e4383 < _e4384);
                             } else {
-                                phi_4654_ = bool();
+                                phi_4766_ = bool();
                             }
-                            let _e4387 = phi_4654_;
+                            let _e4387 = phi_4766_;
                             let _e4388 = local_455;
-                            phi_4656_ = _e4387;
-                            phi_4657_ = select(true, false, _e4388);
+                            phi_4768_ = _e4387;
+                            phi_4769_ = select(true, false, _e4388);
                         } else {
-                            phi_4656_ = bool();
-                            phi_4657_ = true;
+                            phi_4768_ = bool();
+                            phi_4769_ = true;
                         }
-                        let _e4391 = phi_4656_;
-                        let _e4393 = phi_4657_;
+                        let _e4391 = phi_4768_;
+                        let _e4393 = phi_4769_;
                         if select(_e4391, false, _e4393) {
                             let _e4395 = local_452;
                             let _e4396 = local_52;
@@ -5352,45 +5352,45 @@ fn function_() {
                                 let _e4400 = local_52;
                                 let _e4401 = local_452;
                                 let _e4403 = local_448;
-                                phi_4672_ = (_e4403 + (_e4400 - _e4401));
-                                phi_4673_ = (_e4398 + 1u);
+                                phi_4784_ = (_e4403 + (_e4400 - _e4401));
+                                phi_4785_ = (_e4398 + 1u);
                             } else {
-                                phi_4672_ = _e4352;
-                                phi_4673_ = _e4354;
+                                phi_4784_ = _e4352;
+                                phi_4785_ = _e4354;
                             }
-                            let _e4406 = phi_4672_;
-                            let _e4408 = phi_4673_;
-                            phi_4674_ = _e4406;
-                            phi_4675_ = _e4408;
+                            let _e4406 = phi_4784_;
+                            let _e4408 = phi_4785_;
+                            phi_4786_ = _e4406;
+                            phi_4787_ = _e4408;
                         } else {
-                            phi_4674_ = _e4352;
-                            phi_4675_ = _e4354;
+                            phi_4786_ = _e4352;
+                            phi_4787_ = _e4354;
                         }
-                        let _e4410 = phi_4674_;
-                        let _e4412 = phi_4675_;
+                        let _e4410 = phi_4786_;
+                        let _e4412 = phi_4787_;
                         let _e4413 = local_447;
-                        phi_4577_ = (_e4413 + 1u);
-                        phi_4580_ = _e4410;
-                        phi_4582_ = _e4412;
+                        phi_4689_ = (_e4413 + 1u);
+                        phi_4692_ = _e4410;
+                        phi_4694_ = _e4412;
                     } else {
-                        phi_4577_ = u32();
-                        phi_4580_ = u32();
-                        phi_4582_ = u32();
+                        phi_4689_ = u32();
+                        phi_4692_ = u32();
+                        phi_4694_ = u32();
                     }
-                    let _e4416 = phi_4577_;
-                    let _e4418 = phi_4580_;
-                    let _e4420 = phi_4582_;
+                    let _e4416 = phi_4689_;
+                    let _e4418 = phi_4692_;
+                    let _e4420 = phi_4694_;
                     continue;
                     continuing {
                         let _e4421 = local_450;
-                        phi_4576_ = _e4416;
-                        phi_4579_ = _e4418;
-                        phi_4581_ = _e4420;
-                        phi_5328_ = _e4163;
+                        phi_4688_ = _e4416;
+                        phi_4691_ = _e4418;
+                        phi_4693_ = _e4420;
+                        phi_5440_ = _e4163;
                         break if !(_e4421);
                     }
                 }
-                let _e4424 = phi_5328_;
+                let _e4424 = phi_5440_;
                 if _e4424 {
                     break;
                 }
@@ -5441,20 +5441,20 @@ fn function_() {
                     if _e737 {
                         let _e738 = local_457;
                         let _e739 = local_18;
-                        phi_4751_ = (_e738 < _e739);
+                        phi_4863_ = (_e738 < _e739);
                     } else {
-                        phi_4751_ = bool();
+                        phi_4863_ = bool();
                     }
-                    let _e742 = phi_4751_;
+                    let _e742 = phi_4863_;
                     let _e743 = local_458;
-                    phi_4753_ = _e742;
-                    phi_4754_ = select(true, false, _e743);
+                    phi_4865_ = _e742;
+                    phi_4866_ = select(true, false, _e743);
                 } else {
-                    phi_4753_ = bool();
-                    phi_4754_ = true;
+                    phi_4865_ = bool();
+                    phi_4866_ = true;
                 }
-                let _e746 = phi_4753_;
-                let _e748 = phi_4754_;
+                let _e746 = phi_4865_;
+                let _e748 = phi_4866_;
                 if select(_e746, false, _e748) {
                     let _e750 = local_457;
                     let _e751 = local_17;
@@ -5505,11 +5505,11 @@ fn function_() {
                     let _e788 = local_465;
                     let _e791 = global_8.member[_e788];
                     if ((bitcast<u32>(bitcast<f32>(_e791)) & 2147483647u) > 2139095040u) {
-                        phi_4809_ = array<f32, 3>(0f, 0f, 0f);
+                        phi_4921_ = array<f32, 3>(0f, 0f, 0f);
                     } else {
-                        phi_4809_ = array<f32, 3>(_e781, _e782, bitcast<f32>(_e779));
+                        phi_4921_ = array<f32, 3>(_e781, _e782, bitcast<f32>(_e779));
                     }
-                    let _e797 = phi_4809_;
+                    let _e797 = phi_4921_;
                     local_466 = _e797;
                     let _e798 = local_459;
                     let _e799 = (3u * _e798);

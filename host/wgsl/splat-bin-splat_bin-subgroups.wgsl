@@ -467,209 +467,209 @@ fn function_() {
     var phi_420_: type_16;
     var phi_421_: bool;
     var phi_426_: type_16;
-    var phi_566_: u32;
-    var phi_569_: u32;
-    var phi_605_: u32;
-    var phi_567_: u32;
-    var phi_570_: u32;
-    var phi_2777_: bool;
-    var phi_458_: u32;
-    var phi_461_: u32;
-    var phi_462_: u32;
-    var phi_464_: u32;
-    var phi_492_: u32;
-    var phi_459_: u32;
+    var phi_576_: u32;
+    var phi_579_: u32;
+    var phi_615_: u32;
+    var phi_577_: u32;
+    var phi_580_: u32;
+    var phi_2797_: bool;
     var phi_463_: u32;
-    var phi_465_: u32;
-    var phi_2802_: bool;
-    var phi_509_: u32;
-    var phi_512_: u32;
-    var phi_514_: u32;
-    var phi_529_: u32;
-    var phi_510_: u32;
-    var phi_513_: u32;
-    var phi_515_: u32;
-    var phi_2807_: bool;
-    var phi_2819_: bool;
-    var phi_620_: u32;
-    var phi_2817_: bool;
-    var phi_643_: u32;
-    var phi_646_: u32;
-    var phi_648_: u32;
-    var phi_682_: u32;
-    var phi_684_: u32;
-    var phi_685_: bool;
-    var phi_690_: u32;
-    var phi_693_: u32;
-    var phi_717_: u32;
-    var phi_691_: u32;
-    var phi_694_: u32;
-    var phi_2813_: bool;
-    var phi_2825_: bool;
-    var phi_720_: u32;
-    var phi_723_: type_25;
-    var phi_725_: u32;
-    var phi_740_: type_25;
-    var phi_766_: type_25;
-    var phi_741_: type_25;
-    var phi_767_: bool;
+    var phi_466_: u32;
+    var phi_467_: u32;
+    var phi_469_: u32;
+    var phi_497_: u32;
+    var phi_464_: u32;
+    var phi_468_: u32;
+    var phi_470_: u32;
     var phi_2822_: bool;
-    var phi_787_: u32;
-    var phi_856_: u32;
-    var phi_859_: u32;
-    var phi_883_: u32;
-    var phi_899_: u32;
-    var phi_905_: u32;
-    var phi_857_: u32;
-    var phi_860_: u32;
+    var phi_519_: u32;
+    var phi_522_: u32;
+    var phi_524_: u32;
+    var phi_539_: u32;
+    var phi_520_: u32;
+    var phi_523_: u32;
+    var phi_525_: u32;
     var phi_2827_: bool;
-    var phi_909_: u32;
-    var phi_912_: u32;
-    var phi_936_: u32;
-    var phi_952_: u32;
-    var phi_958_: u32;
-    var phi_910_: u32;
-    var phi_913_: u32;
-    var phi_2836_: bool;
-    var phi_977_: u32;
-    var phi_1017_: u32;
-    var phi_1000_: u32;
-    var phi_1018_: u32;
+    var phi_2839_: bool;
+    var phi_630_: u32;
+    var phi_2837_: bool;
+    var phi_653_: u32;
+    var phi_656_: u32;
+    var phi_658_: u32;
+    var phi_692_: u32;
+    var phi_694_: u32;
+    var phi_695_: bool;
+    var phi_700_: u32;
+    var phi_703_: u32;
+    var phi_727_: u32;
+    var phi_701_: u32;
+    var phi_704_: u32;
+    var phi_2833_: bool;
     var phi_2845_: bool;
-    var phi_1130_: type_25;
-    var phi_1132_: type_25;
-    var phi_1154_: u32;
-    var phi_1175_: u32;
-    var phi_1220_: u32;
-    var phi_1201_: u32;
-    var phi_1221_: u32;
-    var phi_1133_: type_25;
+    var phi_730_: u32;
+    var phi_733_: type_25;
+    var phi_735_: u32;
+    var phi_750_: type_25;
+    var phi_776_: type_25;
+    var phi_751_: type_25;
+    var phi_777_: bool;
     var phi_2842_: bool;
-    var phi_1719_: u32;
-    var phi_1737_: u32;
-    var phi_1418_: array<f32, 3>;
-    var phi_1429_: f32;
-    var phi_1454_: u32;
-    var phi_1467_: u32;
-    var phi_1501_: type_22;
-    var phi_1512_: f32;
-    var phi_1536_: bool;
-    var phi_1558_: f32;
-    var phi_1559_: f32;
-    var phi_1565_: f32;
-    var phi_1567_: f32;
-    var phi_1664_: u32;
-    var phi_1665_: u32;
-    var phi_1685_: bool;
-    var phi_1701_: u32;
-    var phi_1702_: u32;
-    var phi_1739_: u32;
-    var phi_1740_: u32;
-    var phi_2873_: bool;
-    var phi_1741_: u32;
-    var phi_1742_: type_25;
-    var phi_1743_: u32;
-    var phi_2872_: bool;
-    var phi_721_: u32;
-    var phi_724_: type_25;
-    var phi_726_: u32;
-    var phi_1744_: bool;
-    var phi_2871_: bool;
-    var phi_2908_: bool;
+    var phi_797_: u32;
+    var phi_866_: u32;
+    var phi_869_: u32;
+    var phi_893_: u32;
+    var phi_909_: u32;
+    var phi_915_: u32;
+    var phi_867_: u32;
+    var phi_870_: u32;
+    var phi_2847_: bool;
+    var phi_919_: u32;
+    var phi_922_: u32;
+    var phi_946_: u32;
+    var phi_962_: u32;
+    var phi_968_: u32;
+    var phi_920_: u32;
+    var phi_923_: u32;
+    var phi_2856_: bool;
+    var phi_987_: u32;
+    var phi_1027_: u32;
+    var phi_1010_: u32;
+    var phi_1028_: u32;
+    var phi_2865_: bool;
+    var phi_1140_: type_25;
+    var phi_1142_: type_25;
+    var phi_1164_: u32;
+    var phi_1185_: u32;
+    var phi_1230_: u32;
+    var phi_1211_: u32;
+    var phi_1231_: u32;
+    var phi_1143_: type_25;
+    var phi_2862_: bool;
+    var phi_1729_: u32;
+    var phi_1747_: u32;
+    var phi_1428_: array<f32, 3>;
+    var phi_1439_: f32;
+    var phi_1464_: u32;
+    var phi_1477_: u32;
+    var phi_1511_: type_22;
+    var phi_1522_: f32;
+    var phi_1546_: bool;
+    var phi_1568_: f32;
+    var phi_1569_: f32;
+    var phi_1575_: f32;
+    var phi_1577_: f32;
+    var phi_1674_: u32;
+    var phi_1675_: u32;
+    var phi_1695_: bool;
+    var phi_1711_: u32;
+    var phi_1712_: u32;
     var phi_1749_: u32;
-    var phi_1781_: type_16;
-    var phi_1783_: type_16;
-    var phi_1784_: bool;
-    var phi_1785_: type_16;
-    var phi_1786_: bool;
+    var phi_1750_: u32;
+    var phi_2893_: bool;
+    var phi_1751_: u32;
+    var phi_1752_: type_25;
+    var phi_1753_: u32;
+    var phi_2892_: bool;
+    var phi_731_: u32;
+    var phi_734_: type_25;
+    var phi_736_: u32;
+    var phi_1754_: bool;
+    var phi_2891_: bool;
+    var phi_2928_: bool;
+    var phi_1759_: u32;
     var phi_1791_: type_16;
-    var phi_1931_: u32;
-    var phi_1934_: u32;
-    var phi_1970_: u32;
-    var phi_1932_: u32;
-    var phi_1935_: u32;
-    var phi_2903_: bool;
-    var phi_1823_: u32;
-    var phi_1826_: u32;
-    var phi_1827_: u32;
-    var phi_1829_: u32;
-    var phi_1857_: u32;
-    var phi_1824_: u32;
-    var phi_1828_: u32;
-    var phi_1830_: u32;
-    var phi_2914_: bool;
-    var phi_1874_: u32;
-    var phi_1877_: u32;
-    var phi_1879_: u32;
-    var phi_1894_: u32;
-    var phi_1875_: u32;
-    var phi_1878_: u32;
-    var phi_1880_: u32;
-    var phi_2919_: bool;
-    var phi_2929_: bool;
-    var phi_1985_: u32;
-    var phi_2000_: u32;
-    var phi_2017_: u32;
-    var phi_2020_: u32;
-    var phi_2044_: u32;
-    var phi_2018_: u32;
-    var phi_2021_: u32;
-    var phi_2925_: bool;
-    var phi_2935_: bool;
-    var phi_2045_: u32;
+    var phi_1793_: type_16;
+    var phi_1794_: bool;
+    var phi_1795_: type_16;
+    var phi_1796_: bool;
+    var phi_1801_: type_16;
+    var phi_1951_: u32;
+    var phi_1954_: u32;
+    var phi_1990_: u32;
+    var phi_1952_: u32;
+    var phi_1955_: u32;
+    var phi_2923_: bool;
+    var phi_1838_: u32;
+    var phi_1841_: u32;
+    var phi_1842_: u32;
+    var phi_1844_: u32;
+    var phi_1872_: u32;
+    var phi_1839_: u32;
+    var phi_1843_: u32;
+    var phi_1845_: u32;
     var phi_2934_: bool;
-    var phi_2048_: type_25;
-    var phi_2051_: u32;
-    var phi_2053_: u32;
-    var phi_2070_: type_25;
-    var phi_2096_: type_25;
-    var phi_2071_: type_25;
-    var phi_2097_: bool;
-    var phi_2931_: bool;
-    var phi_2117_: u32;
-    var phi_2186_: u32;
-    var phi_2189_: u32;
-    var phi_2213_: u32;
-    var phi_2229_: u32;
-    var phi_2235_: u32;
-    var phi_2187_: u32;
-    var phi_2190_: u32;
-    var phi_2937_: bool;
-    var phi_2239_: u32;
-    var phi_2242_: u32;
-    var phi_2266_: u32;
-    var phi_2282_: u32;
-    var phi_2288_: u32;
-    var phi_2240_: u32;
-    var phi_2243_: u32;
-    var phi_2946_: bool;
-    var phi_2307_: u32;
-    var phi_2347_: u32;
-    var phi_2330_: u32;
-    var phi_2348_: u32;
+    var phi_1894_: u32;
+    var phi_1897_: u32;
+    var phi_1899_: u32;
+    var phi_1914_: u32;
+    var phi_1895_: u32;
+    var phi_1898_: u32;
+    var phi_1900_: u32;
+    var phi_2939_: bool;
+    var phi_2949_: bool;
+    var phi_2005_: u32;
+    var phi_2020_: u32;
+    var phi_2037_: u32;
+    var phi_2040_: u32;
+    var phi_2064_: u32;
+    var phi_2038_: u32;
+    var phi_2041_: u32;
+    var phi_2945_: bool;
     var phi_2955_: bool;
-    var phi_2460_: type_25;
-    var phi_2462_: type_25;
-    var phi_2484_: u32;
-    var phi_2505_: u32;
-    var phi_2550_: u32;
-    var phi_2531_: u32;
+    var phi_2065_: u32;
+    var phi_2954_: bool;
+    var phi_2068_: type_25;
+    var phi_2071_: u32;
+    var phi_2073_: u32;
+    var phi_2090_: type_25;
+    var phi_2116_: type_25;
+    var phi_2091_: type_25;
+    var phi_2117_: bool;
+    var phi_2951_: bool;
+    var phi_2137_: u32;
+    var phi_2206_: u32;
+    var phi_2209_: u32;
+    var phi_2233_: u32;
+    var phi_2249_: u32;
+    var phi_2255_: u32;
+    var phi_2207_: u32;
+    var phi_2210_: u32;
+    var phi_2957_: bool;
+    var phi_2259_: u32;
+    var phi_2262_: u32;
+    var phi_2286_: u32;
+    var phi_2302_: u32;
+    var phi_2308_: u32;
+    var phi_2260_: u32;
+    var phi_2263_: u32;
+    var phi_2966_: bool;
+    var phi_2327_: u32;
+    var phi_2367_: u32;
+    var phi_2350_: u32;
+    var phi_2368_: u32;
+    var phi_2975_: bool;
+    var phi_2480_: type_25;
+    var phi_2482_: type_25;
+    var phi_2504_: u32;
+    var phi_2525_: u32;
+    var phi_2570_: u32;
     var phi_2551_: u32;
-    var phi_2463_: type_25;
-    var phi_2952_: bool;
-    var phi_2983_: bool;
-    var phi_2711_: type_25;
-    var phi_2712_: u32;
-    var phi_2982_: bool;
-    var phi_2049_: type_25;
-    var phi_2052_: u32;
-    var phi_2054_: u32;
-    var phi_2981_: bool;
-    var phi_2985_: bool;
-    var phi_644_: u32;
-    var phi_647_: u32;
-    var phi_649_: u32;
-    var phi_2984_: bool;
+    var phi_2571_: u32;
+    var phi_2483_: type_25;
+    var phi_2972_: bool;
+    var phi_3003_: bool;
+    var phi_2731_: type_25;
+    var phi_2732_: u32;
+    var phi_3002_: bool;
+    var phi_2069_: type_25;
+    var phi_2072_: u32;
+    var phi_2074_: u32;
+    var phi_3001_: bool;
+    var phi_3005_: bool;
+    var phi_654_: u32;
+    var phi_657_: u32;
+    var phi_659_: u32;
+    var phi_3004_: bool;
     var local_341: u32;
     var local_342: u32;
     var local_343: u32;
@@ -1015,15 +1015,15 @@ fn function_() {
                         global_12[_e758] = _e760;
                         storageBarrier();
                         workgroupBarrier();
-                        phi_458_ = 768u;
-                        phi_461_ = 1024u;
-                        phi_462_ = 256u;
-                        phi_464_ = 0u;
+                        phi_463_ = 768u;
+                        phi_466_ = 1024u;
+                        phi_467_ = 256u;
+                        phi_469_ = 0u;
                         loop {
-                            let _e762 = phi_458_;
-                            let _e764 = phi_461_;
-                            let _e766 = phi_462_;
-                            let _e768 = phi_464_;
+                            let _e762 = phi_463_;
+                            let _e764 = phi_466_;
+                            let _e766 = phi_467_;
+                            let _e768 = phi_469_;
                             local_52 = _e762;
                             local_53 = _e764;
                             local_54 = _e766;
@@ -1053,16 +1053,16 @@ fn function_() {
                                     local_60 = _e786;
                                     if (_e786 < 1792u) {
                                     } else {
-                                        phi_2802_ = true;
+                                        phi_2822_ = true;
                                         break;
                                     }
                                     let _e788 = local_60;
                                     let _e790 = global_12[_e788];
-                                    phi_492_ = _e790;
+                                    phi_497_ = _e790;
                                 } else {
-                                    phi_492_ = 0u;
+                                    phi_497_ = 0u;
                                 }
-                                let _e792 = phi_492_;
+                                let _e792 = phi_497_;
                                 let _e793 = subgroupInclusiveAdd(_e792);
                                 local_61 = _e793;
                                 let _e794 = local_59;
@@ -1073,7 +1073,7 @@ fn function_() {
                                     local_62 = _e797;
                                     if (_e797 < 1792u) {
                                     } else {
-                                        phi_2802_ = true;
+                                        phi_2822_ = true;
                                         break;
                                     }
                                     let _e799 = local_62;
@@ -1085,42 +1085,42 @@ fn function_() {
                                 let _e802 = local_52;
                                 let _e803 = local_58;
                                 let _e805 = local_55;
-                                phi_459_ = (_e802 + _e803);
-                                phi_463_ = _e776;
-                                phi_465_ = (_e805 + 1u);
+                                phi_464_ = (_e802 + _e803);
+                                phi_468_ = _e776;
+                                phi_470_ = (_e805 + 1u);
                             } else {
-                                phi_459_ = u32();
-                                phi_463_ = u32();
-                                phi_465_ = u32();
+                                phi_464_ = u32();
+                                phi_468_ = u32();
+                                phi_470_ = u32();
                             }
-                            let _e808 = phi_459_;
-                            let _e810 = phi_463_;
-                            let _e812 = phi_465_;
+                            let _e808 = phi_464_;
+                            let _e810 = phi_468_;
+                            let _e812 = phi_470_;
                             continue;
                             continuing {
                                 let _e813 = local_56;
-                                phi_458_ = _e808;
-                                phi_461_ = _e762;
-                                phi_462_ = _e810;
-                                phi_464_ = _e812;
-                                phi_2802_ = false;
+                                phi_463_ = _e808;
+                                phi_466_ = _e762;
+                                phi_467_ = _e810;
+                                phi_469_ = _e812;
+                                phi_2822_ = false;
                                 break if !(_e813);
                             }
                         }
-                        let _e816 = phi_2802_;
+                        let _e816 = phi_2822_;
                         if _e816 {
                             break;
                         }
                         let _e3382 = local_341;
-                        phi_509_ = _e3382;
+                        phi_519_ = _e3382;
                         let _e3385 = local_342;
-                        phi_512_ = _e3385;
+                        phi_522_ = _e3385;
                         let _e3388 = local_343;
-                        phi_514_ = _e3388;
+                        phi_524_ = _e3388;
                         loop {
-                            let _e818 = phi_509_;
-                            let _e820 = phi_512_;
-                            let _e822 = phi_514_;
+                            let _e818 = phi_519_;
+                            let _e820 = phi_522_;
+                            let _e822 = phi_524_;
                             local_63 = _e818;
                             local_64 = _e820;
                             local_65 = _e822;
@@ -1136,13 +1136,13 @@ fn function_() {
                                 local_68 = _e829;
                                 let _e830 = local_65;
                                 if (_e830 == 1u) {
-                                    phi_529_ = 1024u;
+                                    phi_539_ = 1024u;
                                 } else {
                                     let _e832 = local_63;
                                     let _e833 = local_68;
-                                    phi_529_ = (_e832 - _e833);
+                                    phi_539_ = (_e832 - _e833);
                                 }
-                                let _e836 = phi_529_;
+                                let _e836 = phi_539_;
                                 local_69 = _e836;
                                 let _e837 = local;
                                 let _e838 = local_46;
@@ -1160,7 +1160,7 @@ fn function_() {
                                         local_71 = _e852;
                                         if (_e852 < 1792u) {
                                         } else {
-                                            phi_2807_ = true;
+                                            phi_2827_ = true;
                                             break;
                                         }
                                         let _e854 = local_71;
@@ -1171,7 +1171,7 @@ fn function_() {
                                         local_73 = _e858;
                                         if _e858 {
                                         } else {
-                                            phi_2807_ = true;
+                                            phi_2827_ = true;
                                             break;
                                         }
                                         let _e859 = local_70;
@@ -1181,7 +1181,7 @@ fn function_() {
                                         let _e864 = local_73;
                                         if _e864 {
                                         } else {
-                                            phi_2807_ = true;
+                                            phi_2827_ = true;
                                             break;
                                         }
                                         let _e865 = local_74;
@@ -1191,39 +1191,39 @@ fn function_() {
                                 storageBarrier();
                                 workgroupBarrier();
                                 let _e866 = local_65;
-                                phi_510_ = _e836;
-                                phi_513_ = _e829;
-                                phi_515_ = (_e866 - 1u);
+                                phi_520_ = _e836;
+                                phi_523_ = _e829;
+                                phi_525_ = (_e866 - 1u);
                             } else {
-                                phi_510_ = u32();
-                                phi_513_ = u32();
-                                phi_515_ = u32();
+                                phi_520_ = u32();
+                                phi_523_ = u32();
+                                phi_525_ = u32();
                             }
-                            let _e869 = phi_510_;
-                            let _e871 = phi_513_;
-                            let _e873 = phi_515_;
+                            let _e869 = phi_520_;
+                            let _e871 = phi_523_;
+                            let _e873 = phi_525_;
                             continue;
                             continuing {
                                 let _e874 = local_66;
-                                phi_509_ = _e869;
-                                phi_512_ = _e871;
-                                phi_514_ = _e873;
-                                phi_2807_ = _e816;
+                                phi_519_ = _e869;
+                                phi_522_ = _e871;
+                                phi_524_ = _e873;
+                                phi_2827_ = _e816;
                                 break if !(_e874);
                             }
                         }
-                        let _e877 = phi_2807_;
+                        let _e877 = phi_2827_;
                         if _e877 {
                             break;
                         }
-                        phi_2819_ = _e877;
-                        phi_620_ = 1024u;
+                        phi_2839_ = _e877;
+                        phi_630_ = 1024u;
                     } else {
-                        phi_566_ = 1u;
-                        phi_569_ = 768u;
+                        phi_576_ = 1u;
+                        phi_579_ = 768u;
                         loop {
-                            let _e691 = phi_566_;
-                            let _e693 = phi_569_;
+                            let _e691 = phi_576_;
+                            let _e693 = phi_579_;
                             local_75 = _e691;
                             local_76 = _e693;
                             local_344 = _e693;
@@ -1240,7 +1240,7 @@ fn function_() {
                                 local_78 = _e701;
                                 if (_e701 < 1792u) {
                                 } else {
-                                    phi_2777_ = true;
+                                    phi_2797_ = true;
                                     break;
                                 }
                                 let _e703 = local_78;
@@ -1256,17 +1256,17 @@ fn function_() {
                                     local_80 = _e713;
                                     if (_e713 < 1792u) {
                                     } else {
-                                        phi_2777_ = true;
+                                        phi_2797_ = true;
                                         break;
                                     }
                                     let _e715 = local_80;
                                     let _e717 = global_12[_e715];
                                     let _e718 = local_79;
-                                    phi_605_ = (_e717 + _e718);
+                                    phi_615_ = (_e717 + _e718);
                                 } else {
-                                    phi_605_ = _e705;
+                                    phi_615_ = _e705;
                                 }
-                                let _e721 = phi_605_;
+                                let _e721 = phi_615_;
                                 local_81 = _e721;
                                 let _e722 = local_331;
                                 let _e723 = local;
@@ -1274,7 +1274,7 @@ fn function_() {
                                 local_82 = _e724;
                                 if (_e724 < 1792u) {
                                 } else {
-                                    phi_2777_ = true;
+                                    phi_2797_ = true;
                                     break;
                                 }
                                 let _e726 = local_82;
@@ -1283,33 +1283,33 @@ fn function_() {
                                 storageBarrier();
                                 workgroupBarrier();
                                 let _e729 = local_75;
-                                phi_567_ = (_e729 * 2u);
-                                phi_570_ = _e698;
+                                phi_577_ = (_e729 * 2u);
+                                phi_580_ = _e698;
                             } else {
-                                phi_567_ = u32();
-                                phi_570_ = u32();
+                                phi_577_ = u32();
+                                phi_580_ = u32();
                             }
-                            let _e732 = phi_567_;
-                            let _e734 = phi_570_;
+                            let _e732 = phi_577_;
+                            let _e734 = phi_580_;
                             continue;
                             continuing {
                                 let _e735 = local_77;
-                                phi_566_ = _e732;
-                                phi_569_ = _e734;
-                                phi_2777_ = false;
+                                phi_576_ = _e732;
+                                phi_579_ = _e734;
+                                phi_2797_ = false;
                                 break if !(_e735);
                             }
                         }
-                        let _e738 = phi_2777_;
+                        let _e738 = phi_2797_;
                         if _e738 {
                             break;
                         }
-                        phi_2819_ = _e738;
+                        phi_2839_ = _e738;
                         let _e3397 = local_344;
-                        phi_620_ = _e3397;
+                        phi_630_ = _e3397;
                     }
-                    let _e879 = phi_2819_;
-                    let _e881 = phi_620_;
+                    let _e879 = phi_2839_;
+                    let _e881 = phi_630_;
                     local_83 = _e881;
                     let _e882 = (_e881 + 255u);
                     local_84 = _e882;
@@ -1325,15 +1325,15 @@ fn function_() {
                     let _e891 = select(16u, 1u, ((_e887.member_10 & 2u) == 0u));
                     local_332 = _e891;
                     local_87 = (32u >> bitcast<u32>((select(firstTrailingBit(_e891), 32u, (_e891 == 0u)) & 31u)));
-                    phi_2817_ = _e879;
-                    phi_643_ = 0u;
-                    phi_646_ = 0u;
-                    phi_648_ = 0u;
+                    phi_2837_ = _e879;
+                    phi_653_ = 0u;
+                    phi_656_ = 0u;
+                    phi_658_ = 0u;
                     loop {
-                        let _e899 = phi_2817_;
-                        let _e901 = phi_643_;
-                        let _e903 = phi_646_;
-                        let _e905 = phi_648_;
+                        let _e899 = phi_2837_;
+                        let _e901 = phi_653_;
+                        let _e903 = phi_656_;
+                        let _e905 = phi_658_;
                         local_88 = _e901;
                         local_89 = _e903;
                         local_90 = _e905;
@@ -1360,7 +1360,7 @@ fn function_() {
                                     let _e923 = local_11;
                                     if (_e922 < _e923) {
                                     } else {
-                                        phi_2984_ = true;
+                                        phi_3004_ = true;
                                         break;
                                     }
                                     let _e925 = local_94;
@@ -1368,26 +1368,26 @@ fn function_() {
                                     let _e929 = local_88;
                                     let _e930 = local_332;
                                     let _e935 = local_332;
-                                    phi_682_ = ((_e928 >> bitcast<u32>(((_e929 * _e930) & 31u))) & (4294967295u >> bitcast<u32>(((32u - _e935) & 31u))));
+                                    phi_692_ = ((_e928 >> bitcast<u32>(((_e929 * _e930) & 31u))) & (4294967295u >> bitcast<u32>(((32u - _e935) & 31u))));
                                 } else {
-                                    phi_682_ = u32();
+                                    phi_692_ = u32();
                                 }
-                                let _e942 = phi_682_;
+                                let _e942 = phi_692_;
                                 let _e943 = local_93;
-                                phi_684_ = _e942;
-                                phi_685_ = select(true, false, _e943);
+                                phi_694_ = _e942;
+                                phi_695_ = select(true, false, _e943);
                             } else {
-                                phi_684_ = u32();
-                                phi_685_ = true;
+                                phi_694_ = u32();
+                                phi_695_ = true;
                             }
-                            let _e946 = phi_684_;
-                            let _e948 = phi_685_;
+                            let _e946 = phi_694_;
+                            let _e948 = phi_695_;
                             if _e948 {
-                                phi_690_ = 255u;
-                                phi_693_ = 0u;
+                                phi_700_ = 255u;
+                                phi_703_ = 0u;
                                 loop {
-                                    let _e950 = phi_690_;
-                                    let _e952 = phi_693_;
+                                    let _e950 = phi_700_;
+                                    let _e952 = phi_703_;
                                     local_95 = _e950;
                                     local_96 = _e952;
                                     let _e953 = local_96;
@@ -1404,7 +1404,7 @@ fn function_() {
                                         local_99 = _e961;
                                         if (_e961 < 1792u) {
                                         } else {
-                                            phi_2813_ = true;
+                                            phi_2833_ = true;
                                             break;
                                         }
                                         let _e963 = local_99;
@@ -1413,49 +1413,49 @@ fn function_() {
                                         let _e967 = (_e965 > _e966);
                                         local_100 = _e967;
                                         if _e967 {
-                                            phi_717_ = _e952;
+                                            phi_727_ = _e952;
                                         } else {
                                             let _e968 = local_98;
-                                            phi_717_ = (_e968 + 1u);
+                                            phi_727_ = (_e968 + 1u);
                                         }
-                                        let _e971 = phi_717_;
+                                        let _e971 = phi_727_;
                                         let _e972 = local_100;
                                         let _e973 = local_98;
                                         let _e974 = local_95;
-                                        phi_691_ = select(_e974, _e973, _e972);
-                                        phi_694_ = _e971;
+                                        phi_701_ = select(_e974, _e973, _e972);
+                                        phi_704_ = _e971;
                                     } else {
-                                        phi_691_ = u32();
-                                        phi_694_ = u32();
+                                        phi_701_ = u32();
+                                        phi_704_ = u32();
                                     }
-                                    let _e977 = phi_691_;
-                                    let _e979 = phi_694_;
+                                    let _e977 = phi_701_;
+                                    let _e979 = phi_704_;
                                     continue;
                                     continuing {
                                         let _e980 = local_97;
-                                        phi_690_ = _e977;
-                                        phi_693_ = _e979;
-                                        phi_2813_ = _e899;
+                                        phi_700_ = _e977;
+                                        phi_703_ = _e979;
+                                        phi_2833_ = _e899;
                                         break if !(_e980);
                                     }
                                 }
-                                let _e983 = phi_2813_;
-                                phi_2984_ = _e983;
+                                let _e983 = phi_2833_;
+                                phi_3004_ = _e983;
                                 if _e983 {
                                     break;
                                 }
                                 let _e984 = local_96;
                                 let _e985 = local_15;
                                 let _e986 = local_16;
-                                phi_2825_ = _e983;
-                                phi_720_ = 0u;
-                                phi_723_ = type_25(_e984, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e985, _e986, false);
-                                phi_725_ = 0u;
+                                phi_2845_ = _e983;
+                                phi_730_ = 0u;
+                                phi_733_ = type_25(_e984, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e985, _e986, false);
+                                phi_735_ = 0u;
                                 loop {
-                                    let _e989 = phi_2825_;
-                                    let _e991 = phi_720_;
-                                    let _e993 = phi_723_;
-                                    let _e995 = phi_725_;
+                                    let _e989 = phi_2845_;
+                                    let _e991 = phi_730_;
+                                    let _e993 = phi_733_;
+                                    let _e995 = phi_735_;
                                     local_101 = _e991;
                                     local_102 = _e995;
                                     local_347 = _e991;
@@ -1469,9 +1469,9 @@ fn function_() {
                                         let _e1002 = local_85;
                                         let _e1003 = (_e1001 < _e1002);
                                         if _e1003 {
-                                            phi_740_ = _e993;
+                                            phi_750_ = _e993;
                                             loop {
-                                                let _e1005 = phi_740_;
+                                                let _e1005 = phi_750_;
                                                 local_104 = _e1005;
                                                 local_345 = _e1005;
                                                 let _e1006 = local_104;
@@ -1483,7 +1483,7 @@ fn function_() {
                                                     local_106 = _e1011;
                                                     if (_e1011 < 1792u) {
                                                     } else {
-                                                        phi_2822_ = true;
+                                                        phi_2842_ = true;
                                                         break;
                                                     }
                                                     let _e1013 = local_106;
@@ -1493,36 +1493,36 @@ fn function_() {
                                                     if _e1017 {
                                                         let _e1018 = local_105;
                                                         let _e1020 = local_104;
-                                                        phi_766_ = type_25((_e1018 + 1u), _e1020.member_1, _e1020.member_2, _e1020.member_3, _e1020.member_4, _e1020.member_5, _e1020.member_6, _e1020.member_7, _e1020.member_8, _e1020.member_9, _e1020.member_10, _e1020.member_11, _e1020.member_12, _e1020.member_13, _e1020.member_14);
+                                                        phi_776_ = type_25((_e1018 + 1u), _e1020.member_1, _e1020.member_2, _e1020.member_3, _e1020.member_4, _e1020.member_5, _e1020.member_6, _e1020.member_7, _e1020.member_8, _e1020.member_9, _e1020.member_10, _e1020.member_11, _e1020.member_12, _e1020.member_13, _e1020.member_14);
                                                     } else {
-                                                        phi_766_ = type_25();
+                                                        phi_776_ = type_25();
                                                     }
-                                                    let _e1038 = phi_766_;
-                                                    phi_741_ = _e1038;
-                                                    phi_767_ = _e1017;
+                                                    let _e1038 = phi_776_;
+                                                    phi_751_ = _e1038;
+                                                    phi_777_ = _e1017;
                                                 } else {
-                                                    phi_741_ = type_25();
-                                                    phi_767_ = false;
+                                                    phi_751_ = type_25();
+                                                    phi_777_ = false;
                                                 }
-                                                let _e1040 = phi_741_;
-                                                let _e1042 = phi_767_;
+                                                let _e1040 = phi_751_;
+                                                let _e1042 = phi_777_;
                                                 local_107 = _e1042;
                                                 continue;
                                                 continuing {
                                                     let _e1043 = local_107;
-                                                    phi_740_ = _e1040;
-                                                    phi_2822_ = _e989;
+                                                    phi_750_ = _e1040;
+                                                    phi_2842_ = _e989;
                                                     break if !(_e1043);
                                                 }
                                             }
-                                            let _e1046 = phi_2822_;
-                                            phi_2871_ = _e1046;
+                                            let _e1046 = phi_2842_;
+                                            phi_2891_ = _e1046;
                                             if _e1046 {
                                                 break;
                                             }
                                             let _e1047 = local_105;
                                             if (_e1047 == 0u) {
-                                                phi_787_ = 0u;
+                                                phi_797_ = 0u;
                                             } else {
                                                 let _e1049 = local_83;
                                                 let _e1050 = local_105;
@@ -1530,14 +1530,14 @@ fn function_() {
                                                 local_108 = _e1052;
                                                 if (_e1052 < 1792u) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1054 = local_108;
                                                 let _e1056 = global_12[_e1054];
-                                                phi_787_ = _e1056;
+                                                phi_797_ = _e1056;
                                             }
-                                            let _e1058 = phi_787_;
+                                            let _e1058 = phi_797_;
                                             let _e1059 = local_103;
                                             local_109 = (_e1059 - _e1058);
                                             let _e1061 = local_104;
@@ -1548,7 +1548,7 @@ fn function_() {
                                                 let _e1067 = local_17;
                                                 local_111 = _e1067.member_3;
                                                 if (_e1067.member_3 == 0u) {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1070 = local_110;
@@ -1559,7 +1559,7 @@ fn function_() {
                                                 local_113 = _e1074;
                                                 if (_e1074 < 1792u) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1076 = local_113;
@@ -1569,7 +1569,7 @@ fn function_() {
                                                 let _e1080 = (_e1079 == 0u);
                                                 local_115 = _e1080;
                                                 if _e1080 {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1081 = local_114;
@@ -1578,7 +1578,7 @@ fn function_() {
                                                 local_116 = ((_e1081 % _e1082) * _e1084);
                                                 let _e1086 = local_115;
                                                 if _e1086 {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1087 = local_114;
@@ -1615,11 +1615,11 @@ fn function_() {
                                                 let _e1209 = select(_e1208, _e1205, (_e1205 < _e1206));
                                                 local_334 = _e1209;
                                                 local_121 = type_25(_e1202.member, _e1202.member_1, _e1202.member_2, _e1202.member_3, _e1202.member_4, _e1202.member_5, _e1202.member_6, _e1209, _e1202.member_8, _e1202.member_9, _e1202.member_10, _e1202.member_11, _e1202.member_12, _e1202.member_13, _e1202.member_14);
-                                                phi_856_ = (_e1209 - 1u);
-                                                phi_859_ = 0u;
+                                                phi_866_ = (_e1209 - 1u);
+                                                phi_869_ = 0u;
                                                 loop {
-                                                    let _e1228 = phi_856_;
-                                                    let _e1230 = phi_859_;
+                                                    let _e1228 = phi_866_;
+                                                    let _e1230 = phi_869_;
                                                     local_122 = _e1228;
                                                     local_123 = _e1230;
                                                     let _e1231 = local_123;
@@ -1634,11 +1634,11 @@ fn function_() {
                                                         local_125 = _e1237;
                                                         if ((_e1236 % 2u) > 0u) {
                                                             let _e1240 = local_125;
-                                                            phi_883_ = (_e1240 + 1u);
+                                                            phi_893_ = (_e1240 + 1u);
                                                         } else {
-                                                            phi_883_ = _e1237;
+                                                            phi_893_ = _e1237;
                                                         }
-                                                        let _e1243 = phi_883_;
+                                                        let _e1243 = phi_893_;
                                                         local_126 = _e1243;
                                                         let _e1244 = local_334;
                                                         if (_e1243 < _e1244) {
@@ -1650,57 +1650,57 @@ fn function_() {
                                                             let _e1251 = local_7;
                                                             if (_e1250 < _e1251) {
                                                             } else {
-                                                                phi_2827_ = true;
+                                                                phi_2847_ = true;
                                                                 break;
                                                             }
                                                             let _e1253 = local_127;
                                                             let _e1256 = global_10.member[_e1253];
-                                                            phi_899_ = _e1256;
+                                                            phi_909_ = _e1256;
                                                         } else {
-                                                            phi_899_ = 4294967295u;
+                                                            phi_909_ = 4294967295u;
                                                         }
-                                                        let _e1258 = phi_899_;
+                                                        let _e1258 = phi_909_;
                                                         let _e1259 = local_109;
                                                         let _e1260 = (_e1258 <= _e1259);
                                                         local_128 = _e1260;
                                                         if _e1260 {
-                                                            phi_905_ = _e1228;
+                                                            phi_915_ = _e1228;
                                                         } else {
                                                             let _e1261 = local_126;
-                                                            phi_905_ = (_e1261 - 1u);
+                                                            phi_915_ = (_e1261 - 1u);
                                                         }
-                                                        let _e1264 = phi_905_;
+                                                        let _e1264 = phi_915_;
                                                         let _e1265 = local_128;
                                                         let _e1266 = local_126;
                                                         let _e1267 = local_123;
-                                                        phi_857_ = _e1264;
-                                                        phi_860_ = select(_e1267, _e1266, _e1265);
+                                                        phi_867_ = _e1264;
+                                                        phi_870_ = select(_e1267, _e1266, _e1265);
                                                     } else {
-                                                        phi_857_ = u32();
-                                                        phi_860_ = u32();
+                                                        phi_867_ = u32();
+                                                        phi_870_ = u32();
                                                     }
-                                                    let _e1270 = phi_857_;
-                                                    let _e1272 = phi_860_;
+                                                    let _e1270 = phi_867_;
+                                                    let _e1272 = phi_870_;
                                                     continue;
                                                     continuing {
                                                         let _e1273 = local_124;
-                                                        phi_856_ = _e1270;
-                                                        phi_859_ = _e1272;
-                                                        phi_2827_ = _e1046;
+                                                        phi_866_ = _e1270;
+                                                        phi_869_ = _e1272;
+                                                        phi_2847_ = _e1046;
                                                         break if !(_e1273);
                                                     }
                                                 }
-                                                let _e1276 = phi_2827_;
-                                                phi_2871_ = _e1276;
+                                                let _e1276 = phi_2847_;
+                                                phi_2891_ = _e1276;
                                                 if _e1276 {
                                                     break;
                                                 }
                                                 let _e1277 = local_333;
-                                                phi_909_ = (_e1277 - 1u);
-                                                phi_912_ = 0u;
+                                                phi_919_ = (_e1277 - 1u);
+                                                phi_922_ = 0u;
                                                 loop {
-                                                    let _e1280 = phi_909_;
-                                                    let _e1282 = phi_912_;
+                                                    let _e1280 = phi_919_;
+                                                    let _e1282 = phi_922_;
                                                     local_129 = _e1280;
                                                     local_130 = _e1282;
                                                     let _e1283 = local_130;
@@ -1715,11 +1715,11 @@ fn function_() {
                                                         local_132 = _e1289;
                                                         if ((_e1288 % 2u) > 0u) {
                                                             let _e1292 = local_132;
-                                                            phi_936_ = (_e1292 + 1u);
+                                                            phi_946_ = (_e1292 + 1u);
                                                         } else {
-                                                            phi_936_ = _e1289;
+                                                            phi_946_ = _e1289;
                                                         }
-                                                        let _e1295 = phi_936_;
+                                                        let _e1295 = phi_946_;
                                                         local_133 = _e1295;
                                                         let _e1296 = local_123;
                                                         let _e1297 = local_334;
@@ -1733,48 +1733,48 @@ fn function_() {
                                                             let _e1306 = local_7;
                                                             if (_e1305 < _e1306) {
                                                             } else {
-                                                                phi_2836_ = true;
+                                                                phi_2856_ = true;
                                                                 break;
                                                             }
                                                             let _e1308 = local_134;
                                                             let _e1311 = global_10.member[_e1308];
-                                                            phi_952_ = _e1311;
+                                                            phi_962_ = _e1311;
                                                         } else {
-                                                            phi_952_ = 4294967295u;
+                                                            phi_962_ = 4294967295u;
                                                         }
-                                                        let _e1313 = phi_952_;
+                                                        let _e1313 = phi_962_;
                                                         let _e1314 = local_109;
                                                         let _e1315 = (_e1313 <= _e1314);
                                                         local_135 = _e1315;
                                                         if _e1315 {
-                                                            phi_958_ = _e1280;
+                                                            phi_968_ = _e1280;
                                                         } else {
                                                             let _e1316 = local_133;
-                                                            phi_958_ = (_e1316 - 1u);
+                                                            phi_968_ = (_e1316 - 1u);
                                                         }
-                                                        let _e1319 = phi_958_;
+                                                        let _e1319 = phi_968_;
                                                         let _e1320 = local_135;
                                                         let _e1321 = local_133;
                                                         let _e1322 = local_130;
-                                                        phi_910_ = _e1319;
-                                                        phi_913_ = select(_e1322, _e1321, _e1320);
+                                                        phi_920_ = _e1319;
+                                                        phi_923_ = select(_e1322, _e1321, _e1320);
                                                     } else {
-                                                        phi_910_ = u32();
-                                                        phi_913_ = u32();
+                                                        phi_920_ = u32();
+                                                        phi_923_ = u32();
                                                     }
-                                                    let _e1325 = phi_910_;
-                                                    let _e1327 = phi_913_;
+                                                    let _e1325 = phi_920_;
+                                                    let _e1327 = phi_923_;
                                                     continue;
                                                     continuing {
                                                         let _e1328 = local_131;
-                                                        phi_909_ = _e1325;
-                                                        phi_912_ = _e1327;
-                                                        phi_2836_ = _e1276;
+                                                        phi_919_ = _e1325;
+                                                        phi_922_ = _e1327;
+                                                        phi_2856_ = _e1276;
                                                         break if !(_e1328);
                                                     }
                                                 }
-                                                let _e1331 = phi_2836_;
-                                                phi_2871_ = _e1331;
+                                                let _e1331 = phi_2856_;
+                                                phi_2891_ = _e1331;
                                                 if _e1331 {
                                                     break;
                                                 }
@@ -1797,16 +1797,16 @@ fn function_() {
                                                     let _e1377 = local_7;
                                                     if (_e1376 < _e1377) {
                                                     } else {
-                                                        phi_2871_ = true;
+                                                        phi_2891_ = true;
                                                         break;
                                                     }
                                                     let _e1379 = local_138;
                                                     let _e1382 = global_10.member[_e1379];
-                                                    phi_977_ = _e1382;
+                                                    phi_987_ = _e1382;
                                                 } else {
-                                                    phi_977_ = 4294967295u;
+                                                    phi_987_ = 4294967295u;
                                                 }
-                                                let _e1384 = phi_977_;
+                                                let _e1384 = phi_987_;
                                                 let _e1385 = local_136;
                                                 local_139 = type_25(_e1385.member, _e1385.member_1, _e1385.member_2, _e1385.member_3, _e1385.member_4, _e1385.member_5, _e1385.member_6, _e1385.member_7, _e1385.member_8, _e1385.member_9, _e1384, _e1385.member_11, _e1385.member_12, _e1385.member_13, _e1385.member_14);
                                                 let _e1402 = local_130;
@@ -1825,17 +1825,17 @@ fn function_() {
                                                         let _e1431 = local_7;
                                                         if (_e1430 < _e1431) {
                                                         } else {
-                                                            phi_2871_ = true;
+                                                            phi_2891_ = true;
                                                             break;
                                                         }
                                                         let _e1433 = local_141;
                                                         let _e1436 = global_10.member[_e1433];
-                                                        phi_1000_ = _e1436;
+                                                        phi_1010_ = _e1436;
                                                     } else {
-                                                        phi_1000_ = 4294967295u;
+                                                        phi_1010_ = 4294967295u;
                                                     }
-                                                    let _e1438 = phi_1000_;
-                                                    phi_1018_ = _e1438;
+                                                    let _e1438 = phi_1010_;
+                                                    phi_1028_ = _e1438;
                                                 } else {
                                                     let _e1406 = local_123;
                                                     let _e1407 = (_e1406 + 1u);
@@ -1850,19 +1850,19 @@ fn function_() {
                                                         let _e1415 = local_7;
                                                         if (_e1414 < _e1415) {
                                                         } else {
-                                                            phi_2871_ = true;
+                                                            phi_2891_ = true;
                                                             break;
                                                         }
                                                         let _e1417 = local_143;
                                                         let _e1420 = global_10.member[_e1417];
-                                                        phi_1017_ = _e1420;
+                                                        phi_1027_ = _e1420;
                                                     } else {
-                                                        phi_1017_ = 4294967295u;
+                                                        phi_1027_ = 4294967295u;
                                                     }
-                                                    let _e1422 = phi_1017_;
-                                                    phi_1018_ = _e1422;
+                                                    let _e1422 = phi_1027_;
+                                                    phi_1028_ = _e1422;
                                                 }
-                                                let _e1440 = phi_1018_;
+                                                let _e1440 = phi_1028_;
                                                 let _e1441 = local_139;
                                                 local_144 = type_25(_e1441.member, _e1441.member_1, _e1441.member_2, _e1441.member_3, _e1441.member_4, _e1441.member_5, _e1441.member_6, _e1441.member_7, _e1441.member_8, _e1441.member_9, _e1441.member_10, _e1440, _e1441.member_12, _e1441.member_13, _e1441.member_14);
                                                 let _e1458 = local_118;
@@ -1876,7 +1876,7 @@ fn function_() {
                                                 let _e1469 = local_7;
                                                 if (_e1468 < _e1469) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1471 = local_145;
@@ -1913,18 +1913,18 @@ fn function_() {
                                                 let _e1539 = select(_e1537, _e1536, (_e1536 > _e1537));
                                                 let _e1541 = select(0f, _e1539, (_e1539 > 0f));
                                                 let _e1547 = local_144;
-                                                phi_2845_ = _e1331;
-                                                phi_1130_ = type_25(_e1547.member, _e1547.member_1, _e1547.member_2, _e1547.member_3, _e1547.member_4, _e1547.member_5, _e1547.member_6, _e1547.member_7, _e1547.member_8, _e1547.member_9, _e1547.member_10, _e1547.member_11, _e1547.member_12, _e1547.member_13, (((_e1533 * _e1533) + (_e1541 * _e1541)) <= (_e1475 * _e1475)));
+                                                phi_2865_ = _e1331;
+                                                phi_1140_ = type_25(_e1547.member, _e1547.member_1, _e1547.member_2, _e1547.member_3, _e1547.member_4, _e1547.member_5, _e1547.member_6, _e1547.member_7, _e1547.member_8, _e1547.member_9, _e1547.member_10, _e1547.member_11, _e1547.member_12, _e1547.member_13, (((_e1533 * _e1533) + (_e1541 * _e1541)) <= (_e1475 * _e1475)));
                                             } else {
-                                                phi_2845_ = _e1046;
+                                                phi_2865_ = _e1046;
                                                 let _e3444 = local_345;
-                                                phi_1130_ = _e3444;
+                                                phi_1140_ = _e3444;
                                             }
-                                            let _e1565 = phi_2845_;
-                                            let _e1567 = phi_1130_;
-                                            phi_1132_ = _e1567;
+                                            let _e1565 = phi_2865_;
+                                            let _e1567 = phi_1140_;
+                                            phi_1142_ = _e1567;
                                             loop {
-                                                let _e1569 = phi_1132_;
+                                                let _e1569 = phi_1142_;
                                                 local_146 = _e1569;
                                                 local_346 = _e1569;
                                                 let _e1570 = local_146;
@@ -1942,12 +1942,12 @@ fn function_() {
                                                     local_151 = _e1579;
                                                     if _e1579 {
                                                         let _e1583 = local_146;
-                                                        phi_1154_ = _e1583.member_9;
+                                                        phi_1164_ = _e1583.member_9;
                                                     } else {
                                                         let _e1580 = local_146;
-                                                        phi_1154_ = (_e1580.member_9 + 1u);
+                                                        phi_1164_ = (_e1580.member_9 + 1u);
                                                     }
-                                                    let _e1586 = phi_1154_;
+                                                    let _e1586 = phi_1164_;
                                                     local_152 = _e1586;
                                                     let _e1587 = local_151;
                                                     let _e1588 = local_149;
@@ -1970,16 +1970,16 @@ fn function_() {
                                                         let _e1635 = local_7;
                                                         if (_e1634 < _e1635) {
                                                         } else {
-                                                            phi_2842_ = true;
+                                                            phi_2862_ = true;
                                                             break;
                                                         }
                                                         let _e1637 = local_156;
                                                         let _e1640 = global_10.member[_e1637];
-                                                        phi_1175_ = _e1640;
+                                                        phi_1185_ = _e1640;
                                                     } else {
-                                                        phi_1175_ = 4294967295u;
+                                                        phi_1185_ = 4294967295u;
                                                     }
-                                                    let _e1642 = phi_1175_;
+                                                    let _e1642 = phi_1185_;
                                                     let _e1643 = local_153;
                                                     local_157 = type_25(_e1643.member, _e1643.member_1, _e1643.member_2, _e1643.member_3, _e1643.member_4, _e1643.member_5, _e1643.member_6, _e1643.member_7, _e1643.member_8, _e1643.member_9, _e1642, _e1643.member_11, _e1643.member_12, _e1643.member_13, _e1643.member_14);
                                                     let _e1660 = local_335;
@@ -1998,17 +1998,17 @@ fn function_() {
                                                             let _e1693 = local_7;
                                                             if (_e1692 < _e1693) {
                                                             } else {
-                                                                phi_2842_ = true;
+                                                                phi_2862_ = true;
                                                                 break;
                                                             }
                                                             let _e1695 = local_159;
                                                             let _e1698 = global_10.member[_e1695];
-                                                            phi_1201_ = _e1698;
+                                                            phi_1211_ = _e1698;
                                                         } else {
-                                                            phi_1201_ = 4294967295u;
+                                                            phi_1211_ = 4294967295u;
                                                         }
-                                                        let _e1700 = phi_1201_;
-                                                        phi_1221_ = _e1700;
+                                                        let _e1700 = phi_1211_;
+                                                        phi_1231_ = _e1700;
                                                     } else {
                                                         let _e1664 = local_152;
                                                         let _e1665 = (_e1664 + 1u);
@@ -2023,19 +2023,19 @@ fn function_() {
                                                             let _e1675 = local_7;
                                                             if (_e1674 < _e1675) {
                                                             } else {
-                                                                phi_2842_ = true;
+                                                                phi_2862_ = true;
                                                                 break;
                                                             }
                                                             let _e1677 = local_161;
                                                             let _e1680 = global_10.member[_e1677];
-                                                            phi_1220_ = _e1680;
+                                                            phi_1230_ = _e1680;
                                                         } else {
-                                                            phi_1220_ = 4294967295u;
+                                                            phi_1230_ = 4294967295u;
                                                         }
-                                                        let _e1682 = phi_1220_;
-                                                        phi_1221_ = _e1682;
+                                                        let _e1682 = phi_1230_;
+                                                        phi_1231_ = _e1682;
                                                     }
-                                                    let _e1702 = phi_1221_;
+                                                    let _e1702 = phi_1231_;
                                                     let _e1703 = local_157;
                                                     local_162 = type_25(_e1703.member, _e1703.member_1, _e1703.member_2, _e1703.member_3, _e1703.member_4, _e1703.member_5, _e1703.member_6, _e1703.member_7, _e1703.member_8, _e1703.member_9, _e1703.member_10, _e1702, _e1703.member_12, _e1703.member_13, _e1703.member_14);
                                                     let _e1720 = local_17;
@@ -2048,7 +2048,7 @@ fn function_() {
                                                     let _e1733 = local_7;
                                                     if (_e1732 < _e1733) {
                                                     } else {
-                                                        phi_2842_ = true;
+                                                        phi_2862_ = true;
                                                         break;
                                                     }
                                                     let _e1735 = local_163;
@@ -2079,21 +2079,21 @@ fn function_() {
                                                     let _e1801 = select(_e1799, _e1798, (_e1798 > _e1799));
                                                     let _e1803 = select(0f, _e1801, (_e1801 > 0f));
                                                     let _e1809 = local_162;
-                                                    phi_1133_ = type_25(_e1809.member, _e1809.member_1, _e1809.member_2, _e1809.member_3, _e1809.member_4, _e1809.member_5, _e1809.member_6, _e1809.member_7, _e1809.member_8, _e1809.member_9, _e1809.member_10, _e1809.member_11, _e1809.member_12, _e1809.member_13, (((_e1795 * _e1795) + (_e1803 * _e1803)) <= (_e1739 * _e1739)));
+                                                    phi_1143_ = type_25(_e1809.member, _e1809.member_1, _e1809.member_2, _e1809.member_3, _e1809.member_4, _e1809.member_5, _e1809.member_6, _e1809.member_7, _e1809.member_8, _e1809.member_9, _e1809.member_10, _e1809.member_11, _e1809.member_12, _e1809.member_13, (((_e1795 * _e1795) + (_e1803 * _e1803)) <= (_e1739 * _e1739)));
                                                 } else {
-                                                    phi_1133_ = type_25();
+                                                    phi_1143_ = type_25();
                                                 }
-                                                let _e1827 = phi_1133_;
+                                                let _e1827 = phi_1143_;
                                                 continue;
                                                 continuing {
                                                     let _e1828 = local_148;
-                                                    phi_1132_ = _e1827;
-                                                    phi_2842_ = _e1565;
+                                                    phi_1142_ = _e1827;
+                                                    phi_2862_ = _e1565;
                                                     break if !(_e1828);
                                                 }
                                             }
-                                            let _e1831 = phi_2842_;
-                                            phi_2871_ = _e1831;
+                                            let _e1831 = phi_2862_;
+                                            phi_2891_ = _e1831;
                                             if _e1831 {
                                                 break;
                                             }
@@ -2108,7 +2108,7 @@ fn function_() {
                                             let _e1840 = local_17;
                                             local_168 = _e1840.member_3;
                                             if (_e1840.member_3 == 0u) {
-                                                phi_2871_ = true;
+                                                phi_2891_ = true;
                                                 break;
                                             }
                                             let _e1843 = local_167;
@@ -2132,7 +2132,7 @@ fn function_() {
                                                 let _e1900 = local_5;
                                                 if (_e1899 < _e1900) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1902 = local_171;
@@ -2144,7 +2144,7 @@ fn function_() {
                                                 let _e1908 = local_5;
                                                 if (_e1907 < _e1908) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1910 = local_173;
@@ -2156,7 +2156,7 @@ fn function_() {
                                                 let _e1916 = local_5;
                                                 if (_e1915 < _e1916) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1918 = local_175;
@@ -2168,7 +2168,7 @@ fn function_() {
                                                 let _e1924 = local_5;
                                                 if (_e1923 < _e1924) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1926 = local_177;
@@ -2184,27 +2184,27 @@ fn function_() {
                                                 let _e1940 = (_e1938 >> bitcast<u32>(24i));
                                                 local_182 = _e1940;
                                                 if (_e1940 == 0u) {
-                                                    phi_1418_ = array<f32, 3>(0f, 0f, 0f);
+                                                    phi_1428_ = array<f32, 3>(0f, 0f, 0f);
                                                 } else {
                                                     let _e1942 = local_182;
                                                     let _e1948 = bitcast<f32>((bitcast<u32>((bitcast<i32>(_e1942) + -13i)) << bitcast<u32>(23i)));
                                                     let _e1949 = local_179;
                                                     let _e1952 = local_180;
                                                     let _e1955 = local_181;
-                                                    phi_1418_ = array<f32, 3>((f32(_e1949) * _e1948), (f32(_e1952) * _e1948), (f32(_e1955) * _e1948));
+                                                    phi_1428_ = array<f32, 3>((f32(_e1949) * _e1948), (f32(_e1952) * _e1948), (f32(_e1955) * _e1948));
                                                 }
-                                                let _e1960 = phi_1418_;
+                                                let _e1960 = phi_1428_;
                                                 local_183 = _e1960;
                                                 let _e1961 = local_174;
                                                 let _e1964 = ((_e1961 >> bitcast<u32>(14u)) & 1023u);
                                                 local_184 = _e1964;
                                                 if (_e1964 >= 1023u) {
-                                                    phi_1429_ = 1f;
+                                                    phi_1439_ = 1f;
                                                 } else {
                                                     let _e1966 = local_184;
-                                                    phi_1429_ = (f32(_e1966) * 0.0009775171f);
+                                                    phi_1439_ = (f32(_e1966) * 0.0009775171f);
                                                 }
-                                                let _e1970 = phi_1429_;
+                                                let _e1970 = phi_1439_;
                                                 local_185 = _e1970;
                                                 let _e1971 = local_176;
                                                 let _e1972 = bitcast<f32>(_e1971);
@@ -2221,34 +2221,34 @@ fn function_() {
                                                 let _e1988 = ((_e1985 >> bitcast<u32>(8u)) & 7u);
                                                 local_189 = _e1988;
                                                 if (_e1988 == 0u) {
-                                                    phi_1501_ = type_22(_e1982, _e1983, _e1970, _e1972, _e1976, 0u);
+                                                    phi_1511_ = type_22(_e1982, _e1983, _e1970, _e1972, _e1976, 0u);
                                                 } else {
                                                     let _e1990 = local_189;
                                                     let _e1991 = local_189;
                                                     let _e1992 = (_e1990 * _e1991);
                                                     local_190 = _e1992;
                                                     if (_e1992 <= 1u) {
-                                                        phi_1454_ = 1u;
+                                                        phi_1464_ = 1u;
                                                     } else {
                                                         let _e1994 = local_190;
-                                                        phi_1454_ = select(16u, 4u, (_e1994 <= 4u));
+                                                        phi_1464_ = select(16u, 4u, (_e1994 <= 4u));
                                                     }
-                                                    let _e1998 = phi_1454_;
+                                                    let _e1998 = phi_1464_;
                                                     local_191 = _e1998;
                                                     if (_e1998 == 0u) {
-                                                        phi_2871_ = true;
+                                                        phi_2891_ = true;
                                                         break;
                                                     }
                                                     let _e2000 = local_191;
                                                     local_192 = (32u / _e2000);
                                                     let _e2002 = local_191;
                                                     if (_e2002 >= 32u) {
-                                                        phi_1467_ = 4294967295u;
+                                                        phi_1477_ = 4294967295u;
                                                     } else {
                                                         let _e2004 = local_191;
-                                                        phi_1467_ = ((1u << bitcast<u32>((_e2004 & 31u))) - 1u);
+                                                        phi_1477_ = ((1u << bitcast<u32>((_e2004 & 31u))) - 1u);
                                                     }
-                                                    let _e2010 = phi_1467_;
+                                                    let _e2010 = phi_1477_;
                                                     local_193 = _e2010;
                                                     let _e2011 = local_17;
                                                     let _e2013 = local_20;
@@ -2260,7 +2260,7 @@ fn function_() {
                                                     let _e2023 = (_e2022 == 0u);
                                                     local_195 = _e2023;
                                                     if _e2023 {
-                                                        phi_2871_ = true;
+                                                        phi_2891_ = true;
                                                         break;
                                                     }
                                                     let _e2024 = local_170;
@@ -2269,7 +2269,7 @@ fn function_() {
                                                     local_196 = (_e2027 + (_e2024 / _e2025));
                                                     let _e2029 = local_195;
                                                     if _e2029 {
-                                                        phi_2871_ = true;
+                                                        phi_2891_ = true;
                                                         break;
                                                     }
                                                     let _e2030 = local_170;
@@ -2280,7 +2280,7 @@ fn function_() {
                                                     let _e2036 = local_5;
                                                     if (_e2035 < _e2036) {
                                                     } else {
-                                                        phi_2871_ = true;
+                                                        phi_2891_ = true;
                                                         break;
                                                     }
                                                     let _e2038 = local_196;
@@ -2292,17 +2292,17 @@ fn function_() {
                                                     let _e2050 = local_185;
                                                     let _e2051 = local_186;
                                                     let _e2052 = local_187;
-                                                    phi_1501_ = type_22(_e2048, _e2049, _e2050, _e2051, _e2052, ((_e2041 >> bitcast<u32>((_e2042 & 31u))) & _e2046));
+                                                    phi_1511_ = type_22(_e2048, _e2049, _e2050, _e2051, _e2052, ((_e2041 >> bitcast<u32>((_e2042 & 31u))) & _e2046));
                                                 }
-                                                let _e2055 = phi_1501_;
+                                                let _e2055 = phi_1511_;
                                                 local_198 = _e2055;
                                                 if (_e2055.member_5 != 0u) {
-                                                    phi_1512_ = 1.4142135f;
+                                                    phi_1522_ = 1.4142135f;
                                                 } else {
                                                     let _e2058 = local_198;
-                                                    phi_1512_ = (0.5f * f32((1u << bitcast<u32>((_e2058.member_4 & 31u)))));
+                                                    phi_1522_ = (0.5f * f32((1u << bitcast<u32>((_e2058.member_4 & 31u)))));
                                                 }
-                                                let _e2066 = phi_1512_;
+                                                let _e2066 = phi_1522_;
                                                 local_199 = _e2066;
                                                 let _e2067 = local_198;
                                                 local_200 = _e2067.member_3;
@@ -2313,16 +2313,16 @@ fn function_() {
                                                     let _e2115 = local_17;
                                                     let _e2119 = local_17;
                                                     let _e2124 = local_17;
-                                                    phi_1567_ = (0.5f * ((((2f * _e2111.member_15.member_1) * _e2115.member_15.member) / (_e2119.member_15.member_2 - _e2115.member_15.member)) * _e2124.member_15.member_3));
+                                                    phi_1577_ = (0.5f * ((((2f * _e2111.member_15.member_1) * _e2115.member_15.member) / (_e2119.member_15.member_2 - _e2115.member_15.member)) * _e2124.member_15.member_3));
                                                 } else {
                                                     let _e2071 = local_201;
                                                     if (_e2071 == 0u) {
-                                                        phi_1536_ = false;
+                                                        phi_1546_ = false;
                                                     } else {
                                                         let _e2073 = local_201;
-                                                        phi_1536_ = (_e2073 <= 2139095040u);
+                                                        phi_1546_ = (_e2073 <= 2139095040u);
                                                     }
-                                                    let _e2076 = phi_1536_;
+                                                    let _e2076 = phi_1546_;
                                                     if _e2076 {
                                                         let _e2077 = local_17;
                                                         let _e2081 = local_17;
@@ -2332,30 +2332,30 @@ fn function_() {
                                                         let _e2093 = ((((2f * _e2077.member_15.member_1) * _e2081.member_15.member) / (_e2085.member_15.member_2 - _e2081.member_15.member)) * _e2090.member_15.member_3);
                                                         local_203 = _e2093;
                                                         if (_e2093 == 0f) {
-                                                            phi_1558_ = 0f;
+                                                            phi_1568_ = 0f;
                                                         } else {
                                                             let _e2095 = local_202;
                                                             let _e2096 = local_200;
                                                             let _e2099 = local_203;
-                                                            phi_1558_ = (_e2099 * (1f - (_e2095 / _e2096)));
+                                                            phi_1568_ = (_e2099 * (1f - (_e2095 / _e2096)));
                                                         }
-                                                        let _e2102 = phi_1558_;
-                                                        phi_1559_ = _e2102;
+                                                        let _e2102 = phi_1568_;
+                                                        phi_1569_ = _e2102;
                                                     } else {
-                                                        phi_1559_ = bitcast<f32>(_e406);
+                                                        phi_1569_ = bitcast<f32>(_e406);
                                                     }
-                                                    let _e2104 = phi_1559_;
+                                                    let _e2104 = phi_1569_;
                                                     local_204 = _e2104;
                                                     if (_e2104 < 0f) {
                                                         let _e2106 = local_204;
-                                                        phi_1565_ = -(_e2106);
+                                                        phi_1575_ = -(_e2106);
                                                     } else {
-                                                        phi_1565_ = _e2104;
+                                                        phi_1575_ = _e2104;
                                                     }
-                                                    let _e2109 = phi_1565_;
-                                                    phi_1567_ = (0.5f * _e2109);
+                                                    let _e2109 = phi_1575_;
+                                                    phi_1577_ = (0.5f * _e2109);
                                                 }
-                                                let _e2130 = phi_1567_;
+                                                let _e2130 = phi_1577_;
                                                 let _e2135 = local_199;
                                                 let _e2136 = (select(_e2130, 0f, ((bitcast<u32>(_e2130) & 2147483647u) > 2139095040u)) + _e2135);
                                                 let _e2137 = local_19;
@@ -2393,9 +2393,9 @@ fn function_() {
                                                     let _e2204 = local_146;
                                                     let _e2206 = local_166;
                                                     local_205 = ((_e2200.member_4 + _e2202) | (_e2204.member_5 + _e2206));
-                                                    phi_1664_ = 0u;
+                                                    phi_1674_ = 0u;
                                                     loop {
-                                                        let _e2210 = phi_1664_;
+                                                        let _e2210 = phi_1674_;
                                                         local_206 = _e2210;
                                                         let _e2211 = local_206;
                                                         let _e2212 = local_27;
@@ -2405,19 +2405,19 @@ fn function_() {
                                                             let _e2217 = local_168;
                                                             let _e2222 = local_336;
                                                             let _e2223 = (_e2222 >= f32((2u * (_e2217 << bitcast<u32>((_e2215 & 31u))))));
-                                                            phi_1665_ = select(u32(), _e2215, _e2223);
-                                                            phi_1685_ = _e2223;
+                                                            phi_1675_ = select(u32(), _e2215, _e2223);
+                                                            phi_1695_ = _e2223;
                                                         } else {
-                                                            phi_1665_ = u32();
-                                                            phi_1685_ = false;
+                                                            phi_1675_ = u32();
+                                                            phi_1695_ = false;
                                                         }
-                                                        let _e2226 = phi_1665_;
-                                                        let _e2228 = phi_1685_;
+                                                        let _e2226 = phi_1675_;
+                                                        let _e2228 = phi_1695_;
                                                         local_207 = _e2228;
                                                         continue;
                                                         continuing {
                                                             let _e2229 = local_207;
-                                                            phi_1664_ = _e2226;
+                                                            phi_1674_ = _e2226;
                                                             break if !(_e2229);
                                                         }
                                                     }
@@ -2426,24 +2426,24 @@ fn function_() {
                                                     if ((_e2236 & ((1u << bitcast<u32>((_e2231 & 31u))) - 1u)) == 0u) {
                                                         let _e2239 = local_102;
                                                         let _e2243 = local_101;
-                                                        phi_1701_ = (_e2243 | (1u << bitcast<u32>((_e2239 & 31u))));
+                                                        phi_1711_ = (_e2243 | (1u << bitcast<u32>((_e2239 & 31u))));
                                                     } else {
-                                                        phi_1701_ = _e991;
+                                                        phi_1711_ = _e991;
                                                     }
-                                                    let _e2246 = phi_1701_;
-                                                    phi_1702_ = _e2246;
+                                                    let _e2246 = phi_1711_;
+                                                    phi_1712_ = _e2246;
                                                 } else {
-                                                    phi_1702_ = _e991;
+                                                    phi_1712_ = _e991;
                                                 }
-                                                let _e2248 = phi_1702_;
+                                                let _e2248 = phi_1712_;
                                                 let _e2249 = local_102;
-                                                phi_1739_ = _e2248;
-                                                phi_1740_ = (_e2249 + 1u);
+                                                phi_1749_ = _e2248;
+                                                phi_1750_ = (_e2249 + 1u);
                                             } else {
                                                 let _e1867 = local_146;
                                                 local_208 = _e1867.member;
                                                 if (_e1867.member == 0u) {
-                                                    phi_1719_ = 0u;
+                                                    phi_1729_ = 0u;
                                                 } else {
                                                     let _e1870 = local_83;
                                                     let _e1871 = local_208;
@@ -2451,14 +2451,14 @@ fn function_() {
                                                     local_209 = _e1873;
                                                     if (_e1873 < 1792u) {
                                                     } else {
-                                                        phi_2871_ = true;
+                                                        phi_2891_ = true;
                                                         break;
                                                     }
                                                     let _e1875 = local_209;
                                                     let _e1877 = global_12[_e1875];
-                                                    phi_1719_ = _e1877;
+                                                    phi_1729_ = _e1877;
                                                 }
-                                                let _e1879 = phi_1719_;
+                                                let _e1879 = phi_1729_;
                                                 local_210 = _e1879;
                                                 let _e1880 = local_83;
                                                 let _e1881 = local_208;
@@ -2466,7 +2466,7 @@ fn function_() {
                                                 local_211 = _e1882;
                                                 if (_e1882 < 1792u) {
                                                 } else {
-                                                    phi_2871_ = true;
+                                                    phi_2891_ = true;
                                                     break;
                                                 }
                                                 let _e1884 = local_211;
@@ -2476,81 +2476,81 @@ fn function_() {
                                                 if (_e1889 < (_e1886 - _e1887)) {
                                                     let _e1891 = local_210;
                                                     let _e1892 = local_147;
-                                                    phi_1737_ = (_e1891 + _e1892);
+                                                    phi_1747_ = (_e1891 + _e1892);
                                                 } else {
-                                                    phi_1737_ = _e1886;
+                                                    phi_1747_ = _e1886;
                                                 }
-                                                let _e1895 = phi_1737_;
+                                                let _e1895 = phi_1747_;
                                                 let _e1896 = local_92;
-                                                phi_1739_ = _e991;
-                                                phi_1740_ = (_e1895 - _e1896);
+                                                phi_1749_ = _e991;
+                                                phi_1750_ = (_e1895 - _e1896);
                                             }
-                                            let _e2252 = phi_1739_;
-                                            let _e2254 = phi_1740_;
-                                            phi_2873_ = _e1831;
-                                            phi_1741_ = _e2252;
+                                            let _e2252 = phi_1749_;
+                                            let _e2254 = phi_1750_;
+                                            phi_2893_ = _e1831;
+                                            phi_1751_ = _e2252;
                                             let _e3477 = local_346;
-                                            phi_1742_ = _e3477;
-                                            phi_1743_ = _e2254;
+                                            phi_1752_ = _e3477;
+                                            phi_1753_ = _e2254;
                                         } else {
-                                            phi_2873_ = _e989;
-                                            phi_1741_ = u32();
-                                            phi_1742_ = type_25();
-                                            phi_1743_ = u32();
+                                            phi_2893_ = _e989;
+                                            phi_1751_ = u32();
+                                            phi_1752_ = type_25();
+                                            phi_1753_ = u32();
                                         }
-                                        let _e2256 = phi_2873_;
-                                        let _e2258 = phi_1741_;
-                                        let _e2260 = phi_1742_;
-                                        let _e2262 = phi_1743_;
-                                        phi_2872_ = _e2256;
-                                        phi_721_ = _e2258;
-                                        phi_724_ = _e2260;
-                                        phi_726_ = _e2262;
-                                        phi_1744_ = _e1003;
+                                        let _e2256 = phi_2893_;
+                                        let _e2258 = phi_1751_;
+                                        let _e2260 = phi_1752_;
+                                        let _e2262 = phi_1753_;
+                                        phi_2892_ = _e2256;
+                                        phi_731_ = _e2258;
+                                        phi_734_ = _e2260;
+                                        phi_736_ = _e2262;
+                                        phi_1754_ = _e1003;
                                     } else {
-                                        phi_2872_ = _e989;
-                                        phi_721_ = u32();
-                                        phi_724_ = type_25();
-                                        phi_726_ = u32();
-                                        phi_1744_ = false;
+                                        phi_2892_ = _e989;
+                                        phi_731_ = u32();
+                                        phi_734_ = type_25();
+                                        phi_736_ = u32();
+                                        phi_1754_ = false;
                                     }
-                                    let _e2264 = phi_2872_;
-                                    let _e2266 = phi_721_;
-                                    let _e2268 = phi_724_;
-                                    let _e2270 = phi_726_;
-                                    let _e2272 = phi_1744_;
+                                    let _e2264 = phi_2892_;
+                                    let _e2266 = phi_731_;
+                                    let _e2268 = phi_734_;
+                                    let _e2270 = phi_736_;
+                                    let _e2272 = phi_1754_;
                                     local_212 = _e2272;
                                     continue;
                                     continuing {
                                         let _e2273 = local_212;
-                                        phi_2825_ = _e2264;
-                                        phi_720_ = _e2266;
-                                        phi_723_ = _e2268;
-                                        phi_725_ = _e2270;
-                                        phi_2871_ = _e2264;
+                                        phi_2845_ = _e2264;
+                                        phi_730_ = _e2266;
+                                        phi_733_ = _e2268;
+                                        phi_735_ = _e2270;
+                                        phi_2891_ = _e2264;
                                         break if !(_e2273);
                                     }
                                 }
-                                let _e2276 = phi_2871_;
-                                phi_2984_ = _e2276;
+                                let _e2276 = phi_2891_;
+                                phi_3004_ = _e2276;
                                 if _e2276 {
                                     break;
                                 }
-                                phi_2908_ = _e2276;
+                                phi_2928_ = _e2276;
                                 let _e3488 = local_347;
-                                phi_1749_ = _e3488;
+                                phi_1759_ = _e3488;
                             } else {
-                                phi_2908_ = _e899;
-                                phi_1749_ = _e946;
+                                phi_2928_ = _e899;
+                                phi_1759_ = _e946;
                             }
-                            let _e2278 = phi_2908_;
-                            let _e2280 = phi_1749_;
+                            let _e2278 = phi_2928_;
+                            let _e2280 = phi_1759_;
                             local_213 = _e2280;
                             local_214 = countOneBits(_e2280);
                             let _e2282 = local;
                             if (_e2282 < 1792u) {
                             } else {
-                                phi_2984_ = true;
+                                phi_3004_ = true;
                                 break;
                             }
                             let _e2284 = local;
@@ -2563,7 +2563,7 @@ fn function_() {
                             local_216 = _e2289;
                             if _e2289 {
                             } else {
-                                phi_2984_ = true;
+                                phi_3004_ = true;
                                 break;
                             }
                             let _e2290 = local_215;
@@ -2582,34 +2582,34 @@ fn function_() {
                                     local_217 = _e2302;
                                     if _e2302 {
                                         let _e2303 = local_1;
-                                        phi_1781_ = type_16(1u, _e2303);
+                                        phi_1791_ = type_16(1u, _e2303);
                                     } else {
-                                        phi_1781_ = type_16();
+                                        phi_1791_ = type_16();
                                     }
-                                    let _e2306 = phi_1781_;
+                                    let _e2306 = phi_1791_;
                                     let _e2307 = local_217;
-                                    phi_1783_ = _e2306;
-                                    phi_1784_ = select(true, false, _e2307);
+                                    phi_1793_ = _e2306;
+                                    phi_1794_ = select(true, false, _e2307);
                                 } else {
-                                    phi_1783_ = type_16();
-                                    phi_1784_ = true;
+                                    phi_1793_ = type_16();
+                                    phi_1794_ = true;
                                 }
-                                let _e2310 = phi_1783_;
-                                let _e2312 = phi_1784_;
-                                phi_1785_ = _e2310;
-                                phi_1786_ = _e2312;
+                                let _e2310 = phi_1793_;
+                                let _e2312 = phi_1794_;
+                                phi_1795_ = _e2310;
+                                phi_1796_ = _e2312;
                             } else {
-                                phi_1785_ = type_16();
-                                phi_1786_ = true;
+                                phi_1795_ = type_16();
+                                phi_1796_ = true;
                             }
-                            let _e2314 = phi_1785_;
-                            let _e2316 = phi_1786_;
+                            let _e2314 = phi_1795_;
+                            let _e2316 = phi_1796_;
                             if _e2316 {
-                                phi_1791_ = type_16(0u, type_16().member_1);
+                                phi_1801_ = type_16(0u, type_16().member_1);
                             } else {
-                                phi_1791_ = _e2314;
+                                phi_1801_ = _e2314;
                             }
-                            let _e2321 = phi_1791_;
+                            let _e2321 = phi_1801_;
                             local_218 = _e2321.member_1;
                             if (bitcast<i32>(_e2321.member) != 0i) {
                                 let _e2375 = local_218;
@@ -2622,7 +2622,7 @@ fn function_() {
                                 local_220 = _e2384;
                                 if (_e2384 < 1792u) {
                                 } else {
-                                    phi_2984_ = true;
+                                    phi_3004_ = true;
                                     break;
                                 }
                                 let _e2386 = local_220;
@@ -2634,7 +2634,7 @@ fn function_() {
                                 local_222 = _e2391;
                                 if (_e2391 < 1792u) {
                                 } else {
-                                    phi_2984_ = true;
+                                    phi_3004_ = true;
                                     break;
                                 }
                                 let _e2393 = local_222;
@@ -2642,15 +2642,15 @@ fn function_() {
                                 global_12[_e2393] = _e2395;
                                 storageBarrier();
                                 workgroupBarrier();
-                                phi_1823_ = 0u;
-                                phi_1826_ = 256u;
-                                phi_1827_ = 256u;
-                                phi_1829_ = 0u;
+                                phi_1838_ = 0u;
+                                phi_1841_ = 256u;
+                                phi_1842_ = 256u;
+                                phi_1844_ = 0u;
                                 loop {
-                                    let _e2397 = phi_1823_;
-                                    let _e2399 = phi_1826_;
-                                    let _e2401 = phi_1827_;
-                                    let _e2403 = phi_1829_;
+                                    let _e2397 = phi_1838_;
+                                    let _e2399 = phi_1841_;
+                                    let _e2401 = phi_1842_;
+                                    let _e2403 = phi_1844_;
                                     local_223 = _e2397;
                                     local_224 = _e2399;
                                     local_225 = _e2401;
@@ -2680,16 +2680,16 @@ fn function_() {
                                             local_231 = _e2421;
                                             if (_e2421 < 1792u) {
                                             } else {
-                                                phi_2914_ = true;
+                                                phi_2934_ = true;
                                                 break;
                                             }
                                             let _e2423 = local_231;
                                             let _e2425 = global_12[_e2423];
-                                            phi_1857_ = _e2425;
+                                            phi_1872_ = _e2425;
                                         } else {
-                                            phi_1857_ = 0u;
+                                            phi_1872_ = 0u;
                                         }
-                                        let _e2427 = phi_1857_;
+                                        let _e2427 = phi_1872_;
                                         let _e2428 = subgroupInclusiveAdd(_e2427);
                                         local_232 = _e2428;
                                         let _e2429 = local_230;
@@ -2700,7 +2700,7 @@ fn function_() {
                                             local_233 = _e2432;
                                             if (_e2432 < 1792u) {
                                             } else {
-                                                phi_2914_ = true;
+                                                phi_2934_ = true;
                                                 break;
                                             }
                                             let _e2434 = local_233;
@@ -2712,43 +2712,43 @@ fn function_() {
                                         let _e2437 = local_223;
                                         let _e2438 = local_229;
                                         let _e2440 = local_226;
-                                        phi_1824_ = (_e2437 + _e2438);
-                                        phi_1828_ = _e2411;
-                                        phi_1830_ = (_e2440 + 1u);
+                                        phi_1839_ = (_e2437 + _e2438);
+                                        phi_1843_ = _e2411;
+                                        phi_1845_ = (_e2440 + 1u);
                                     } else {
-                                        phi_1824_ = u32();
-                                        phi_1828_ = u32();
-                                        phi_1830_ = u32();
+                                        phi_1839_ = u32();
+                                        phi_1843_ = u32();
+                                        phi_1845_ = u32();
                                     }
-                                    let _e2443 = phi_1824_;
-                                    let _e2445 = phi_1828_;
-                                    let _e2447 = phi_1830_;
+                                    let _e2443 = phi_1839_;
+                                    let _e2445 = phi_1843_;
+                                    let _e2447 = phi_1845_;
                                     continue;
                                     continuing {
                                         let _e2448 = local_227;
-                                        phi_1823_ = _e2443;
-                                        phi_1826_ = _e2397;
-                                        phi_1827_ = _e2445;
-                                        phi_1829_ = _e2447;
-                                        phi_2914_ = _e2278;
+                                        phi_1838_ = _e2443;
+                                        phi_1841_ = _e2397;
+                                        phi_1842_ = _e2445;
+                                        phi_1844_ = _e2447;
+                                        phi_2934_ = _e2278;
                                         break if !(_e2448);
                                     }
                                 }
-                                let _e2451 = phi_2914_;
-                                phi_2984_ = _e2451;
+                                let _e2451 = phi_2934_;
+                                phi_3004_ = _e2451;
                                 if _e2451 {
                                     break;
                                 }
                                 let _e3512 = local_348;
-                                phi_1874_ = _e3512;
+                                phi_1894_ = _e3512;
                                 let _e3515 = local_349;
-                                phi_1877_ = _e3515;
+                                phi_1897_ = _e3515;
                                 let _e3518 = local_350;
-                                phi_1879_ = _e3518;
+                                phi_1899_ = _e3518;
                                 loop {
-                                    let _e2453 = phi_1874_;
-                                    let _e2455 = phi_1877_;
-                                    let _e2457 = phi_1879_;
+                                    let _e2453 = phi_1894_;
+                                    let _e2455 = phi_1897_;
+                                    let _e2457 = phi_1899_;
                                     local_234 = _e2453;
                                     local_235 = _e2455;
                                     local_236 = _e2457;
@@ -2764,13 +2764,13 @@ fn function_() {
                                         local_239 = _e2464;
                                         let _e2465 = local_236;
                                         if (_e2465 == 1u) {
-                                            phi_1894_ = 256u;
+                                            phi_1914_ = 256u;
                                         } else {
                                             let _e2467 = local_234;
                                             let _e2468 = local_239;
-                                            phi_1894_ = (_e2467 - _e2468);
+                                            phi_1914_ = (_e2467 - _e2468);
                                         }
-                                        let _e2471 = phi_1894_;
+                                        let _e2471 = phi_1914_;
                                         local_240 = _e2471;
                                         let _e2472 = local;
                                         let _e2473 = local_218;
@@ -2788,7 +2788,7 @@ fn function_() {
                                                 local_242 = _e2487;
                                                 if (_e2487 < 1792u) {
                                                 } else {
-                                                    phi_2919_ = true;
+                                                    phi_2939_ = true;
                                                     break;
                                                 }
                                                 let _e2489 = local_242;
@@ -2799,7 +2799,7 @@ fn function_() {
                                                 local_244 = _e2493;
                                                 if _e2493 {
                                                 } else {
-                                                    phi_2919_ = true;
+                                                    phi_2939_ = true;
                                                     break;
                                                 }
                                                 let _e2494 = local_241;
@@ -2809,7 +2809,7 @@ fn function_() {
                                                 let _e2499 = local_244;
                                                 if _e2499 {
                                                 } else {
-                                                    phi_2919_ = true;
+                                                    phi_2939_ = true;
                                                     break;
                                                 }
                                                 let _e2500 = local_245;
@@ -2819,40 +2819,40 @@ fn function_() {
                                         storageBarrier();
                                         workgroupBarrier();
                                         let _e2501 = local_236;
-                                        phi_1875_ = _e2471;
-                                        phi_1878_ = _e2464;
-                                        phi_1880_ = (_e2501 - 1u);
+                                        phi_1895_ = _e2471;
+                                        phi_1898_ = _e2464;
+                                        phi_1900_ = (_e2501 - 1u);
                                     } else {
-                                        phi_1875_ = u32();
-                                        phi_1878_ = u32();
-                                        phi_1880_ = u32();
+                                        phi_1895_ = u32();
+                                        phi_1898_ = u32();
+                                        phi_1900_ = u32();
                                     }
-                                    let _e2504 = phi_1875_;
-                                    let _e2506 = phi_1878_;
-                                    let _e2508 = phi_1880_;
+                                    let _e2504 = phi_1895_;
+                                    let _e2506 = phi_1898_;
+                                    let _e2508 = phi_1900_;
                                     continue;
                                     continuing {
                                         let _e2509 = local_237;
-                                        phi_1874_ = _e2504;
-                                        phi_1877_ = _e2506;
-                                        phi_1879_ = _e2508;
-                                        phi_2919_ = _e2451;
+                                        phi_1894_ = _e2504;
+                                        phi_1897_ = _e2506;
+                                        phi_1899_ = _e2508;
+                                        phi_2939_ = _e2451;
                                         break if !(_e2509);
                                     }
                                 }
-                                let _e2512 = phi_2919_;
-                                phi_2984_ = _e2512;
+                                let _e2512 = phi_2939_;
+                                phi_3004_ = _e2512;
                                 if _e2512 {
                                     break;
                                 }
-                                phi_2929_ = _e2512;
-                                phi_1985_ = 256u;
+                                phi_2949_ = _e2512;
+                                phi_2005_ = 256u;
                             } else {
-                                phi_1931_ = 1u;
-                                phi_1934_ = 0u;
+                                phi_1951_ = 1u;
+                                phi_1954_ = 0u;
                                 loop {
-                                    let _e2327 = phi_1931_;
-                                    let _e2329 = phi_1934_;
+                                    let _e2327 = phi_1951_;
+                                    let _e2329 = phi_1954_;
                                     local_246 = _e2327;
                                     local_247 = _e2329;
                                     local_351 = _e2329;
@@ -2869,7 +2869,7 @@ fn function_() {
                                         local_249 = _e2337;
                                         if (_e2337 < 1792u) {
                                         } else {
-                                            phi_2903_ = true;
+                                            phi_2923_ = true;
                                             break;
                                         }
                                         let _e2339 = local_249;
@@ -2885,17 +2885,17 @@ fn function_() {
                                             local_251 = _e2349;
                                             if (_e2349 < 1792u) {
                                             } else {
-                                                phi_2903_ = true;
+                                                phi_2923_ = true;
                                                 break;
                                             }
                                             let _e2351 = local_251;
                                             let _e2353 = global_12[_e2351];
                                             let _e2354 = local_250;
-                                            phi_1970_ = (_e2353 + _e2354);
+                                            phi_1990_ = (_e2353 + _e2354);
                                         } else {
-                                            phi_1970_ = _e2341;
+                                            phi_1990_ = _e2341;
                                         }
-                                        let _e2357 = phi_1970_;
+                                        let _e2357 = phi_1990_;
                                         local_252 = _e2357;
                                         let _e2358 = local_337;
                                         let _e2359 = local;
@@ -2903,7 +2903,7 @@ fn function_() {
                                         local_253 = _e2360;
                                         if (_e2360 < 1792u) {
                                         } else {
-                                            phi_2903_ = true;
+                                            phi_2923_ = true;
                                             break;
                                         }
                                         let _e2362 = local_253;
@@ -2912,41 +2912,41 @@ fn function_() {
                                         storageBarrier();
                                         workgroupBarrier();
                                         let _e2365 = local_246;
-                                        phi_1932_ = (_e2365 * 2u);
-                                        phi_1935_ = _e2334;
+                                        phi_1952_ = (_e2365 * 2u);
+                                        phi_1955_ = _e2334;
                                     } else {
-                                        phi_1932_ = u32();
-                                        phi_1935_ = u32();
+                                        phi_1952_ = u32();
+                                        phi_1955_ = u32();
                                     }
-                                    let _e2368 = phi_1932_;
-                                    let _e2370 = phi_1935_;
+                                    let _e2368 = phi_1952_;
+                                    let _e2370 = phi_1955_;
                                     continue;
                                     continuing {
                                         let _e2371 = local_248;
-                                        phi_1931_ = _e2368;
-                                        phi_1934_ = _e2370;
-                                        phi_2903_ = _e2278;
+                                        phi_1951_ = _e2368;
+                                        phi_1954_ = _e2370;
+                                        phi_2923_ = _e2278;
                                         break if !(_e2371);
                                     }
                                 }
-                                let _e2374 = phi_2903_;
-                                phi_2984_ = _e2374;
+                                let _e2374 = phi_2923_;
+                                phi_3004_ = _e2374;
                                 if _e2374 {
                                     break;
                                 }
-                                phi_2929_ = _e2374;
+                                phi_2949_ = _e2374;
                                 let _e3527 = local_351;
-                                phi_1985_ = _e3527;
+                                phi_2005_ = _e3527;
                             }
-                            let _e2514 = phi_2929_;
-                            let _e2516 = phi_1985_;
+                            let _e2514 = phi_2949_;
+                            let _e2516 = phi_2005_;
                             local_254 = _e2516;
                             let _e2517 = local_24;
                             let _e2518 = local_90;
                             local_255 = (_e2517 + _e2518);
                             let _e2520 = local;
                             if (_e2520 == 0u) {
-                                phi_2000_ = 0u;
+                                phi_2020_ = 0u;
                             } else {
                                 let _e2522 = local_254;
                                 let _e2523 = local;
@@ -2954,32 +2954,32 @@ fn function_() {
                                 local_256 = _e2525;
                                 if (_e2525 < 1792u) {
                                 } else {
-                                    phi_2984_ = true;
+                                    phi_3004_ = true;
                                     break;
                                 }
                                 let _e2527 = local_256;
                                 let _e2529 = global_12[_e2527];
-                                phi_2000_ = _e2529;
+                                phi_2020_ = _e2529;
                             }
-                            let _e2531 = phi_2000_;
+                            let _e2531 = phi_2020_;
                             let _e2532 = local_255;
                             let _e2534 = local_216;
                             if _e2534 {
                             } else {
-                                phi_2984_ = true;
+                                phi_3004_ = true;
                                 break;
                             }
                             let _e2535 = global_12[_e2290];
                             local_257 = _e2535;
                             if (_e2535 == 0u) {
-                                phi_2935_ = _e2514;
-                                phi_2045_ = 0u;
+                                phi_2955_ = _e2514;
+                                phi_2065_ = 0u;
                             } else {
-                                phi_2017_ = 255u;
-                                phi_2020_ = 0u;
+                                phi_2037_ = 255u;
+                                phi_2040_ = 0u;
                                 loop {
-                                    let _e2538 = phi_2017_;
-                                    let _e2540 = phi_2020_;
+                                    let _e2538 = phi_2037_;
+                                    let _e2540 = phi_2040_;
                                     local_258 = _e2538;
                                     local_259 = _e2540;
                                     local_352 = _e2540;
@@ -2997,7 +2997,7 @@ fn function_() {
                                         local_262 = _e2549;
                                         if (_e2549 < 1792u) {
                                         } else {
-                                            phi_2925_ = true;
+                                            phi_2945_ = true;
                                             break;
                                         }
                                         let _e2551 = local_262;
@@ -3006,54 +3006,54 @@ fn function_() {
                                         let _e2555 = (_e2553 > _e2554);
                                         local_263 = _e2555;
                                         if _e2555 {
-                                            phi_2044_ = _e2540;
+                                            phi_2064_ = _e2540;
                                         } else {
                                             let _e2556 = local_261;
-                                            phi_2044_ = (_e2556 + 1u);
+                                            phi_2064_ = (_e2556 + 1u);
                                         }
-                                        let _e2559 = phi_2044_;
+                                        let _e2559 = phi_2064_;
                                         let _e2560 = local_263;
                                         let _e2561 = local_261;
                                         let _e2562 = local_258;
-                                        phi_2018_ = select(_e2562, _e2561, _e2560);
-                                        phi_2021_ = _e2559;
+                                        phi_2038_ = select(_e2562, _e2561, _e2560);
+                                        phi_2041_ = _e2559;
                                     } else {
-                                        phi_2018_ = u32();
-                                        phi_2021_ = u32();
+                                        phi_2038_ = u32();
+                                        phi_2041_ = u32();
                                     }
-                                    let _e2565 = phi_2018_;
-                                    let _e2567 = phi_2021_;
+                                    let _e2565 = phi_2038_;
+                                    let _e2567 = phi_2041_;
                                     continue;
                                     continuing {
                                         let _e2568 = local_260;
-                                        phi_2017_ = _e2565;
-                                        phi_2020_ = _e2567;
-                                        phi_2925_ = _e2514;
+                                        phi_2037_ = _e2565;
+                                        phi_2040_ = _e2567;
+                                        phi_2945_ = _e2514;
                                         break if !(_e2568);
                                     }
                                 }
-                                let _e2571 = phi_2925_;
-                                phi_2984_ = _e2571;
+                                let _e2571 = phi_2945_;
+                                phi_3004_ = _e2571;
                                 if _e2571 {
                                     break;
                                 }
-                                phi_2935_ = _e2571;
+                                phi_2955_ = _e2571;
                                 let _e3538 = local_352;
-                                phi_2045_ = _e3538;
+                                phi_2065_ = _e3538;
                             }
-                            let _e2573 = phi_2935_;
-                            let _e2575 = phi_2045_;
+                            let _e2573 = phi_2955_;
+                            let _e2575 = phi_2065_;
                             let _e2576 = local_15;
                             let _e2577 = local_16;
-                            phi_2934_ = _e2573;
-                            phi_2048_ = type_25(_e2575, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e2576, _e2577, false);
-                            phi_2051_ = 0u;
-                            phi_2053_ = (_e2532 + _e2531);
+                            phi_2954_ = _e2573;
+                            phi_2068_ = type_25(_e2575, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e2576, _e2577, false);
+                            phi_2071_ = 0u;
+                            phi_2073_ = (_e2532 + _e2531);
                             loop {
-                                let _e2580 = phi_2934_;
-                                let _e2582 = phi_2048_;
-                                let _e2584 = phi_2051_;
-                                let _e2586 = phi_2053_;
+                                let _e2580 = phi_2954_;
+                                let _e2582 = phi_2068_;
+                                let _e2584 = phi_2071_;
+                                let _e2586 = phi_2073_;
                                 local_264 = _e2584;
                                 local_265 = _e2586;
                                 let _e2587 = local_264;
@@ -3064,16 +3064,16 @@ fn function_() {
                                     let _e2590 = local_264;
                                     let _e2594 = local_257;
                                     if ((_e2594 & (1u << bitcast<u32>((_e2590 & 31u)))) == 0u) {
-                                        phi_2983_ = _e2580;
-                                        phi_2711_ = _e2582;
-                                        phi_2712_ = _e2586;
+                                        phi_3003_ = _e2580;
+                                        phi_2731_ = _e2582;
+                                        phi_2732_ = _e2586;
                                     } else {
                                         let _e2597 = local_92;
                                         let _e2598 = local_264;
                                         local_267 = (_e2597 + _e2598);
-                                        phi_2070_ = _e2582;
+                                        phi_2090_ = _e2582;
                                         loop {
-                                            let _e2601 = phi_2070_;
+                                            let _e2601 = phi_2090_;
                                             local_268 = _e2601;
                                             local_353 = _e2601;
                                             let _e2602 = local_268;
@@ -3085,7 +3085,7 @@ fn function_() {
                                                 local_270 = _e2607;
                                                 if (_e2607 < 1792u) {
                                                 } else {
-                                                    phi_2931_ = true;
+                                                    phi_2951_ = true;
                                                     break;
                                                 }
                                                 let _e2609 = local_270;
@@ -3095,36 +3095,36 @@ fn function_() {
                                                 if _e2613 {
                                                     let _e2614 = local_269;
                                                     let _e2616 = local_268;
-                                                    phi_2096_ = type_25((_e2614 + 1u), _e2616.member_1, _e2616.member_2, _e2616.member_3, _e2616.member_4, _e2616.member_5, _e2616.member_6, _e2616.member_7, _e2616.member_8, _e2616.member_9, _e2616.member_10, _e2616.member_11, _e2616.member_12, _e2616.member_13, _e2616.member_14);
+                                                    phi_2116_ = type_25((_e2614 + 1u), _e2616.member_1, _e2616.member_2, _e2616.member_3, _e2616.member_4, _e2616.member_5, _e2616.member_6, _e2616.member_7, _e2616.member_8, _e2616.member_9, _e2616.member_10, _e2616.member_11, _e2616.member_12, _e2616.member_13, _e2616.member_14);
                                                 } else {
-                                                    phi_2096_ = type_25();
+                                                    phi_2116_ = type_25();
                                                 }
-                                                let _e2634 = phi_2096_;
-                                                phi_2071_ = _e2634;
-                                                phi_2097_ = _e2613;
+                                                let _e2634 = phi_2116_;
+                                                phi_2091_ = _e2634;
+                                                phi_2117_ = _e2613;
                                             } else {
-                                                phi_2071_ = type_25();
-                                                phi_2097_ = false;
+                                                phi_2091_ = type_25();
+                                                phi_2117_ = false;
                                             }
-                                            let _e2636 = phi_2071_;
-                                            let _e2638 = phi_2097_;
+                                            let _e2636 = phi_2091_;
+                                            let _e2638 = phi_2117_;
                                             local_271 = _e2638;
                                             continue;
                                             continuing {
                                                 let _e2639 = local_271;
-                                                phi_2070_ = _e2636;
-                                                phi_2931_ = _e2580;
+                                                phi_2090_ = _e2636;
+                                                phi_2951_ = _e2580;
                                                 break if !(_e2639);
                                             }
                                         }
-                                        let _e2642 = phi_2931_;
-                                        phi_2981_ = _e2642;
+                                        let _e2642 = phi_2951_;
+                                        phi_3001_ = _e2642;
                                         if _e2642 {
                                             break;
                                         }
                                         let _e2643 = local_269;
                                         if (_e2643 == 0u) {
-                                            phi_2117_ = 0u;
+                                            phi_2137_ = 0u;
                                         } else {
                                             let _e2645 = local_83;
                                             let _e2646 = local_269;
@@ -3132,14 +3132,14 @@ fn function_() {
                                             local_272 = _e2648;
                                             if (_e2648 < 1792u) {
                                             } else {
-                                                phi_2981_ = true;
+                                                phi_3001_ = true;
                                                 break;
                                             }
                                             let _e2650 = local_272;
                                             let _e2652 = global_12[_e2650];
-                                            phi_2117_ = _e2652;
+                                            phi_2137_ = _e2652;
                                         }
-                                        let _e2654 = phi_2117_;
+                                        let _e2654 = phi_2137_;
                                         let _e2655 = local_267;
                                         local_273 = (_e2655 - _e2654);
                                         let _e2657 = local_268;
@@ -3150,7 +3150,7 @@ fn function_() {
                                             let _e2663 = local_17;
                                             local_275 = _e2663.member_3;
                                             if (_e2663.member_3 == 0u) {
-                                                phi_2981_ = true;
+                                                phi_3001_ = true;
                                                 break;
                                             }
                                             let _e2666 = local_274;
@@ -3161,7 +3161,7 @@ fn function_() {
                                             local_277 = _e2670;
                                             if (_e2670 < 1792u) {
                                             } else {
-                                                phi_2981_ = true;
+                                                phi_3001_ = true;
                                                 break;
                                             }
                                             let _e2672 = local_277;
@@ -3171,7 +3171,7 @@ fn function_() {
                                             let _e2676 = (_e2675 == 0u);
                                             local_279 = _e2676;
                                             if _e2676 {
-                                                phi_2981_ = true;
+                                                phi_3001_ = true;
                                                 break;
                                             }
                                             let _e2677 = local_278;
@@ -3180,7 +3180,7 @@ fn function_() {
                                             local_280 = ((_e2677 % _e2678) * _e2680);
                                             let _e2682 = local_279;
                                             if _e2682 {
-                                                phi_2981_ = true;
+                                                phi_3001_ = true;
                                                 break;
                                             }
                                             let _e2683 = local_278;
@@ -3216,11 +3216,11 @@ fn function_() {
                                             let _e2805 = select(_e2804, _e2801, (_e2801 < _e2802));
                                             local_339 = _e2805;
                                             local_284 = type_25(_e2798.member, _e2798.member_1, _e2798.member_2, _e2798.member_3, _e2798.member_4, _e2798.member_5, _e2798.member_6, _e2805, _e2798.member_8, _e2798.member_9, _e2798.member_10, _e2798.member_11, _e2798.member_12, _e2798.member_13, _e2798.member_14);
-                                            phi_2186_ = (_e2805 - 1u);
-                                            phi_2189_ = 0u;
+                                            phi_2206_ = (_e2805 - 1u);
+                                            phi_2209_ = 0u;
                                             loop {
-                                                let _e2824 = phi_2186_;
-                                                let _e2826 = phi_2189_;
+                                                let _e2824 = phi_2206_;
+                                                let _e2826 = phi_2209_;
                                                 local_285 = _e2824;
                                                 local_286 = _e2826;
                                                 let _e2827 = local_286;
@@ -3235,11 +3235,11 @@ fn function_() {
                                                     local_288 = _e2833;
                                                     if ((_e2832 % 2u) > 0u) {
                                                         let _e2836 = local_288;
-                                                        phi_2213_ = (_e2836 + 1u);
+                                                        phi_2233_ = (_e2836 + 1u);
                                                     } else {
-                                                        phi_2213_ = _e2833;
+                                                        phi_2233_ = _e2833;
                                                     }
-                                                    let _e2839 = phi_2213_;
+                                                    let _e2839 = phi_2233_;
                                                     local_289 = _e2839;
                                                     let _e2840 = local_339;
                                                     if (_e2839 < _e2840) {
@@ -3251,57 +3251,57 @@ fn function_() {
                                                         let _e2847 = local_7;
                                                         if (_e2846 < _e2847) {
                                                         } else {
-                                                            phi_2937_ = true;
+                                                            phi_2957_ = true;
                                                             break;
                                                         }
                                                         let _e2849 = local_290;
                                                         let _e2852 = global_10.member[_e2849];
-                                                        phi_2229_ = _e2852;
+                                                        phi_2249_ = _e2852;
                                                     } else {
-                                                        phi_2229_ = 4294967295u;
+                                                        phi_2249_ = 4294967295u;
                                                     }
-                                                    let _e2854 = phi_2229_;
+                                                    let _e2854 = phi_2249_;
                                                     let _e2855 = local_273;
                                                     let _e2856 = (_e2854 <= _e2855);
                                                     local_291 = _e2856;
                                                     if _e2856 {
-                                                        phi_2235_ = _e2824;
+                                                        phi_2255_ = _e2824;
                                                     } else {
                                                         let _e2857 = local_289;
-                                                        phi_2235_ = (_e2857 - 1u);
+                                                        phi_2255_ = (_e2857 - 1u);
                                                     }
-                                                    let _e2860 = phi_2235_;
+                                                    let _e2860 = phi_2255_;
                                                     let _e2861 = local_291;
                                                     let _e2862 = local_289;
                                                     let _e2863 = local_286;
-                                                    phi_2187_ = _e2860;
-                                                    phi_2190_ = select(_e2863, _e2862, _e2861);
+                                                    phi_2207_ = _e2860;
+                                                    phi_2210_ = select(_e2863, _e2862, _e2861);
                                                 } else {
-                                                    phi_2187_ = u32();
-                                                    phi_2190_ = u32();
+                                                    phi_2207_ = u32();
+                                                    phi_2210_ = u32();
                                                 }
-                                                let _e2866 = phi_2187_;
-                                                let _e2868 = phi_2190_;
+                                                let _e2866 = phi_2207_;
+                                                let _e2868 = phi_2210_;
                                                 continue;
                                                 continuing {
                                                     let _e2869 = local_287;
-                                                    phi_2186_ = _e2866;
-                                                    phi_2189_ = _e2868;
-                                                    phi_2937_ = _e2642;
+                                                    phi_2206_ = _e2866;
+                                                    phi_2209_ = _e2868;
+                                                    phi_2957_ = _e2642;
                                                     break if !(_e2869);
                                                 }
                                             }
-                                            let _e2872 = phi_2937_;
-                                            phi_2981_ = _e2872;
+                                            let _e2872 = phi_2957_;
+                                            phi_3001_ = _e2872;
                                             if _e2872 {
                                                 break;
                                             }
                                             let _e2873 = local_338;
-                                            phi_2239_ = (_e2873 - 1u);
-                                            phi_2242_ = 0u;
+                                            phi_2259_ = (_e2873 - 1u);
+                                            phi_2262_ = 0u;
                                             loop {
-                                                let _e2876 = phi_2239_;
-                                                let _e2878 = phi_2242_;
+                                                let _e2876 = phi_2259_;
+                                                let _e2878 = phi_2262_;
                                                 local_292 = _e2876;
                                                 local_293 = _e2878;
                                                 let _e2879 = local_293;
@@ -3316,11 +3316,11 @@ fn function_() {
                                                     local_295 = _e2885;
                                                     if ((_e2884 % 2u) > 0u) {
                                                         let _e2888 = local_295;
-                                                        phi_2266_ = (_e2888 + 1u);
+                                                        phi_2286_ = (_e2888 + 1u);
                                                     } else {
-                                                        phi_2266_ = _e2885;
+                                                        phi_2286_ = _e2885;
                                                     }
-                                                    let _e2891 = phi_2266_;
+                                                    let _e2891 = phi_2286_;
                                                     local_296 = _e2891;
                                                     let _e2892 = local_286;
                                                     let _e2893 = local_339;
@@ -3334,48 +3334,48 @@ fn function_() {
                                                         let _e2902 = local_7;
                                                         if (_e2901 < _e2902) {
                                                         } else {
-                                                            phi_2946_ = true;
+                                                            phi_2966_ = true;
                                                             break;
                                                         }
                                                         let _e2904 = local_297;
                                                         let _e2907 = global_10.member[_e2904];
-                                                        phi_2282_ = _e2907;
+                                                        phi_2302_ = _e2907;
                                                     } else {
-                                                        phi_2282_ = 4294967295u;
+                                                        phi_2302_ = 4294967295u;
                                                     }
-                                                    let _e2909 = phi_2282_;
+                                                    let _e2909 = phi_2302_;
                                                     let _e2910 = local_273;
                                                     let _e2911 = (_e2909 <= _e2910);
                                                     local_298 = _e2911;
                                                     if _e2911 {
-                                                        phi_2288_ = _e2876;
+                                                        phi_2308_ = _e2876;
                                                     } else {
                                                         let _e2912 = local_296;
-                                                        phi_2288_ = (_e2912 - 1u);
+                                                        phi_2308_ = (_e2912 - 1u);
                                                     }
-                                                    let _e2915 = phi_2288_;
+                                                    let _e2915 = phi_2308_;
                                                     let _e2916 = local_298;
                                                     let _e2917 = local_296;
                                                     let _e2918 = local_293;
-                                                    phi_2240_ = _e2915;
-                                                    phi_2243_ = select(_e2918, _e2917, _e2916);
+                                                    phi_2260_ = _e2915;
+                                                    phi_2263_ = select(_e2918, _e2917, _e2916);
                                                 } else {
-                                                    phi_2240_ = u32();
-                                                    phi_2243_ = u32();
+                                                    phi_2260_ = u32();
+                                                    phi_2263_ = u32();
                                                 }
-                                                let _e2921 = phi_2240_;
-                                                let _e2923 = phi_2243_;
+                                                let _e2921 = phi_2260_;
+                                                let _e2923 = phi_2263_;
                                                 continue;
                                                 continuing {
                                                     let _e2924 = local_294;
-                                                    phi_2239_ = _e2921;
-                                                    phi_2242_ = _e2923;
-                                                    phi_2946_ = _e2872;
+                                                    phi_2259_ = _e2921;
+                                                    phi_2262_ = _e2923;
+                                                    phi_2966_ = _e2872;
                                                     break if !(_e2924);
                                                 }
                                             }
-                                            let _e2927 = phi_2946_;
-                                            phi_2981_ = _e2927;
+                                            let _e2927 = phi_2966_;
+                                            phi_3001_ = _e2927;
                                             if _e2927 {
                                                 break;
                                             }
@@ -3398,16 +3398,16 @@ fn function_() {
                                                 let _e2973 = local_7;
                                                 if (_e2972 < _e2973) {
                                                 } else {
-                                                    phi_2981_ = true;
+                                                    phi_3001_ = true;
                                                     break;
                                                 }
                                                 let _e2975 = local_301;
                                                 let _e2978 = global_10.member[_e2975];
-                                                phi_2307_ = _e2978;
+                                                phi_2327_ = _e2978;
                                             } else {
-                                                phi_2307_ = 4294967295u;
+                                                phi_2327_ = 4294967295u;
                                             }
-                                            let _e2980 = phi_2307_;
+                                            let _e2980 = phi_2327_;
                                             let _e2981 = local_299;
                                             local_302 = type_25(_e2981.member, _e2981.member_1, _e2981.member_2, _e2981.member_3, _e2981.member_4, _e2981.member_5, _e2981.member_6, _e2981.member_7, _e2981.member_8, _e2981.member_9, _e2980, _e2981.member_11, _e2981.member_12, _e2981.member_13, _e2981.member_14);
                                             let _e2998 = local_293;
@@ -3426,17 +3426,17 @@ fn function_() {
                                                     let _e3027 = local_7;
                                                     if (_e3026 < _e3027) {
                                                     } else {
-                                                        phi_2981_ = true;
+                                                        phi_3001_ = true;
                                                         break;
                                                     }
                                                     let _e3029 = local_304;
                                                     let _e3032 = global_10.member[_e3029];
-                                                    phi_2330_ = _e3032;
+                                                    phi_2350_ = _e3032;
                                                 } else {
-                                                    phi_2330_ = 4294967295u;
+                                                    phi_2350_ = 4294967295u;
                                                 }
-                                                let _e3034 = phi_2330_;
-                                                phi_2348_ = _e3034;
+                                                let _e3034 = phi_2350_;
+                                                phi_2368_ = _e3034;
                                             } else {
                                                 let _e3002 = local_286;
                                                 let _e3003 = (_e3002 + 1u);
@@ -3451,19 +3451,19 @@ fn function_() {
                                                     let _e3011 = local_7;
                                                     if (_e3010 < _e3011) {
                                                     } else {
-                                                        phi_2981_ = true;
+                                                        phi_3001_ = true;
                                                         break;
                                                     }
                                                     let _e3013 = local_306;
                                                     let _e3016 = global_10.member[_e3013];
-                                                    phi_2347_ = _e3016;
+                                                    phi_2367_ = _e3016;
                                                 } else {
-                                                    phi_2347_ = 4294967295u;
+                                                    phi_2367_ = 4294967295u;
                                                 }
-                                                let _e3018 = phi_2347_;
-                                                phi_2348_ = _e3018;
+                                                let _e3018 = phi_2367_;
+                                                phi_2368_ = _e3018;
                                             }
-                                            let _e3036 = phi_2348_;
+                                            let _e3036 = phi_2368_;
                                             let _e3037 = local_302;
                                             let _e3054 = local_281;
                                             let _e3055 = local_283;
@@ -3474,21 +3474,21 @@ fn function_() {
                                             let _e3065 = local_7;
                                             if (((_e3054 * _e3055) + ((_e3060 + (_e3057 * _e3058)) + _e3062)) < _e3065) {
                                             } else {
-                                                phi_2981_ = true;
+                                                phi_3001_ = true;
                                                 break;
                                             }
-                                            phi_2955_ = _e2927;
-                                            phi_2460_ = type_25(_e3037.member, _e3037.member_1, _e3037.member_2, _e3037.member_3, _e3037.member_4, _e3037.member_5, _e3037.member_6, _e3037.member_7, _e3037.member_8, _e3037.member_9, _e3037.member_10, _e3036, _e3037.member_12, _e3037.member_13, _e3037.member_14);
+                                            phi_2975_ = _e2927;
+                                            phi_2480_ = type_25(_e3037.member, _e3037.member_1, _e3037.member_2, _e3037.member_3, _e3037.member_4, _e3037.member_5, _e3037.member_6, _e3037.member_7, _e3037.member_8, _e3037.member_9, _e3037.member_10, _e3036, _e3037.member_12, _e3037.member_13, _e3037.member_14);
                                         } else {
-                                            phi_2955_ = _e2642;
+                                            phi_2975_ = _e2642;
                                             let _e3572 = local_353;
-                                            phi_2460_ = _e3572;
+                                            phi_2480_ = _e3572;
                                         }
-                                        let _e3068 = phi_2955_;
-                                        let _e3070 = phi_2460_;
-                                        phi_2462_ = _e3070;
+                                        let _e3068 = phi_2975_;
+                                        let _e3070 = phi_2480_;
+                                        phi_2482_ = _e3070;
                                         loop {
-                                            let _e3072 = phi_2462_;
+                                            let _e3072 = phi_2482_;
                                             local_307 = _e3072;
                                             local_354 = _e3072;
                                             let _e3073 = local_307;
@@ -3505,12 +3505,12 @@ fn function_() {
                                                 local_311 = _e3082;
                                                 if _e3082 {
                                                     let _e3086 = local_307;
-                                                    phi_2484_ = _e3086.member_9;
+                                                    phi_2504_ = _e3086.member_9;
                                                 } else {
                                                     let _e3083 = local_307;
-                                                    phi_2484_ = (_e3083.member_9 + 1u);
+                                                    phi_2504_ = (_e3083.member_9 + 1u);
                                                 }
-                                                let _e3089 = phi_2484_;
+                                                let _e3089 = phi_2504_;
                                                 local_312 = _e3089;
                                                 let _e3090 = local_311;
                                                 let _e3091 = local_309;
@@ -3533,16 +3533,16 @@ fn function_() {
                                                     let _e3138 = local_7;
                                                     if (_e3137 < _e3138) {
                                                     } else {
-                                                        phi_2952_ = true;
+                                                        phi_2972_ = true;
                                                         break;
                                                     }
                                                     let _e3140 = local_316;
                                                     let _e3143 = global_10.member[_e3140];
-                                                    phi_2505_ = _e3143;
+                                                    phi_2525_ = _e3143;
                                                 } else {
-                                                    phi_2505_ = 4294967295u;
+                                                    phi_2525_ = 4294967295u;
                                                 }
-                                                let _e3145 = phi_2505_;
+                                                let _e3145 = phi_2525_;
                                                 let _e3146 = local_313;
                                                 local_317 = type_25(_e3146.member, _e3146.member_1, _e3146.member_2, _e3146.member_3, _e3146.member_4, _e3146.member_5, _e3146.member_6, _e3146.member_7, _e3146.member_8, _e3146.member_9, _e3145, _e3146.member_11, _e3146.member_12, _e3146.member_13, _e3146.member_14);
                                                 let _e3163 = local_340;
@@ -3561,17 +3561,17 @@ fn function_() {
                                                         let _e3196 = local_7;
                                                         if (_e3195 < _e3196) {
                                                         } else {
-                                                            phi_2952_ = true;
+                                                            phi_2972_ = true;
                                                             break;
                                                         }
                                                         let _e3198 = local_319;
                                                         let _e3201 = global_10.member[_e3198];
-                                                        phi_2531_ = _e3201;
+                                                        phi_2551_ = _e3201;
                                                     } else {
-                                                        phi_2531_ = 4294967295u;
+                                                        phi_2551_ = 4294967295u;
                                                     }
-                                                    let _e3203 = phi_2531_;
-                                                    phi_2551_ = _e3203;
+                                                    let _e3203 = phi_2551_;
+                                                    phi_2571_ = _e3203;
                                                 } else {
                                                     let _e3167 = local_312;
                                                     let _e3168 = (_e3167 + 1u);
@@ -3586,19 +3586,19 @@ fn function_() {
                                                         let _e3178 = local_7;
                                                         if (_e3177 < _e3178) {
                                                         } else {
-                                                            phi_2952_ = true;
+                                                            phi_2972_ = true;
                                                             break;
                                                         }
                                                         let _e3180 = local_321;
                                                         let _e3183 = global_10.member[_e3180];
-                                                        phi_2550_ = _e3183;
+                                                        phi_2570_ = _e3183;
                                                     } else {
-                                                        phi_2550_ = 4294967295u;
+                                                        phi_2570_ = 4294967295u;
                                                     }
-                                                    let _e3185 = phi_2550_;
-                                                    phi_2551_ = _e3185;
+                                                    let _e3185 = phi_2570_;
+                                                    phi_2571_ = _e3185;
                                                 }
-                                                let _e3205 = phi_2551_;
+                                                let _e3205 = phi_2571_;
                                                 let _e3206 = local_317;
                                                 let _e3223 = local_17;
                                                 let _e3225 = local_17;
@@ -3608,24 +3608,24 @@ fn function_() {
                                                 let _e3236 = local_7;
                                                 if (((_e3223.member_4 * _e3225.member_5) + ((_e3228.member_3 + (_e3230 * _e3223.member_4)) + _e3233)) < _e3236) {
                                                 } else {
-                                                    phi_2952_ = true;
+                                                    phi_2972_ = true;
                                                     break;
                                                 }
-                                                phi_2463_ = type_25(_e3206.member, _e3206.member_1, _e3206.member_2, _e3206.member_3, _e3206.member_4, _e3206.member_5, _e3206.member_6, _e3206.member_7, _e3206.member_8, _e3206.member_9, _e3206.member_10, _e3205, _e3206.member_12, _e3206.member_13, _e3206.member_14);
+                                                phi_2483_ = type_25(_e3206.member, _e3206.member_1, _e3206.member_2, _e3206.member_3, _e3206.member_4, _e3206.member_5, _e3206.member_6, _e3206.member_7, _e3206.member_8, _e3206.member_9, _e3206.member_10, _e3205, _e3206.member_12, _e3206.member_13, _e3206.member_14);
                                             } else {
-                                                phi_2463_ = type_25();
+                                                phi_2483_ = type_25();
                                             }
-                                            let _e3239 = phi_2463_;
+                                            let _e3239 = phi_2483_;
                                             continue;
                                             continuing {
                                                 let _e3240 = local_308;
-                                                phi_2462_ = _e3239;
-                                                phi_2952_ = _e3068;
+                                                phi_2482_ = _e3239;
+                                                phi_2972_ = _e3068;
                                                 break if !(_e3240);
                                             }
                                         }
-                                        let _e3243 = phi_2952_;
-                                        phi_2981_ = _e3243;
+                                        let _e3243 = phi_2972_;
+                                        phi_3001_ = _e3243;
                                         if _e3243 {
                                             break;
                                         }
@@ -3640,7 +3640,7 @@ fn function_() {
                                         let _e3252 = local_17;
                                         local_326 = _e3252.member_3;
                                         if (_e3252.member_3 == 0u) {
-                                            phi_2981_ = true;
+                                            phi_3001_ = true;
                                             break;
                                         }
                                         let _e3255 = local_325;
@@ -3661,7 +3661,7 @@ fn function_() {
                                         let _e3279 = local_5;
                                         if (_e3278 < _e3279) {
                                         } else {
-                                            phi_2981_ = true;
+                                            phi_3001_ = true;
                                             break;
                                         }
                                         let _e3281 = local_328;
@@ -3671,7 +3671,7 @@ fn function_() {
                                         let _e3286 = local_12;
                                         if (_e3285 < _e3286) {
                                         } else {
-                                            phi_2981_ = true;
+                                            phi_3001_ = true;
                                             break;
                                         }
                                         let _e3288 = local_265;
@@ -3681,49 +3681,49 @@ fn function_() {
                                         let _e3293 = local_13;
                                         if (_e3292 < _e3293) {
                                         } else {
-                                            phi_2981_ = true;
+                                            phi_3001_ = true;
                                             break;
                                         }
                                         let _e3295 = local_265;
                                         let _e3298 = local_327;
                                         global_16.member[_e3295] = _e3298;
                                         let _e3299 = local_265;
-                                        phi_2983_ = _e3243;
+                                        phi_3003_ = _e3243;
                                         let _e3584 = local_354;
-                                        phi_2711_ = _e3584;
-                                        phi_2712_ = (_e3299 + 1u);
+                                        phi_2731_ = _e3584;
+                                        phi_2732_ = (_e3299 + 1u);
                                     }
-                                    let _e3302 = phi_2983_;
-                                    let _e3304 = phi_2711_;
-                                    let _e3306 = phi_2712_;
+                                    let _e3302 = phi_3003_;
+                                    let _e3304 = phi_2731_;
+                                    let _e3306 = phi_2732_;
                                     let _e3307 = local_264;
-                                    phi_2982_ = _e3302;
-                                    phi_2049_ = _e3304;
-                                    phi_2052_ = (_e3307 + 1u);
-                                    phi_2054_ = _e3306;
+                                    phi_3002_ = _e3302;
+                                    phi_2069_ = _e3304;
+                                    phi_2072_ = (_e3307 + 1u);
+                                    phi_2074_ = _e3306;
                                 } else {
-                                    phi_2982_ = _e2580;
-                                    phi_2049_ = type_25();
-                                    phi_2052_ = u32();
-                                    phi_2054_ = u32();
+                                    phi_3002_ = _e2580;
+                                    phi_2069_ = type_25();
+                                    phi_2072_ = u32();
+                                    phi_2074_ = u32();
                                 }
-                                let _e3310 = phi_2982_;
-                                let _e3312 = phi_2049_;
-                                let _e3314 = phi_2052_;
-                                let _e3316 = phi_2054_;
+                                let _e3310 = phi_3002_;
+                                let _e3312 = phi_2069_;
+                                let _e3314 = phi_2072_;
+                                let _e3316 = phi_2074_;
                                 continue;
                                 continuing {
                                     let _e3317 = local_266;
-                                    phi_2934_ = _e3310;
-                                    phi_2048_ = _e3312;
-                                    phi_2051_ = _e3314;
-                                    phi_2053_ = _e3316;
-                                    phi_2981_ = _e3310;
+                                    phi_2954_ = _e3310;
+                                    phi_2068_ = _e3312;
+                                    phi_2071_ = _e3314;
+                                    phi_2073_ = _e3316;
+                                    phi_3001_ = _e3310;
                                     break if !(_e3317);
                                 }
                             }
-                            let _e3320 = phi_2981_;
-                            phi_2984_ = _e3320;
+                            let _e3320 = phi_3001_;
+                            phi_3004_ = _e3320;
                             if _e3320 {
                                 break;
                             }
@@ -3732,7 +3732,7 @@ fn function_() {
                             local_330 = _e3322;
                             if (_e3322 < 1792u) {
                             } else {
-                                phi_2984_ = true;
+                                phi_3004_ = true;
                                 break;
                             }
                             let _e3324 = local_330;
@@ -3743,32 +3743,32 @@ fn function_() {
                             let _e3329 = local_332;
                             let _e3331 = local_89;
                             let _e3333 = local_88;
-                            phi_2985_ = _e3320;
-                            phi_644_ = (_e3333 + 1u);
-                            phi_647_ = (_e3331 + (256u * _e3329));
-                            phi_649_ = (_e3327 + _e3326);
+                            phi_3005_ = _e3320;
+                            phi_654_ = (_e3333 + 1u);
+                            phi_657_ = (_e3331 + (256u * _e3329));
+                            phi_659_ = (_e3327 + _e3326);
                         } else {
-                            phi_2985_ = _e899;
-                            phi_644_ = u32();
-                            phi_647_ = u32();
-                            phi_649_ = u32();
+                            phi_3005_ = _e899;
+                            phi_654_ = u32();
+                            phi_657_ = u32();
+                            phi_659_ = u32();
                         }
-                        let _e3336 = phi_2985_;
-                        let _e3338 = phi_644_;
-                        let _e3340 = phi_647_;
-                        let _e3342 = phi_649_;
+                        let _e3336 = phi_3005_;
+                        let _e3338 = phi_654_;
+                        let _e3340 = phi_657_;
+                        let _e3342 = phi_659_;
                         continue;
                         continuing {
                             let _e3343 = local_91;
-                            phi_2817_ = _e3336;
-                            phi_643_ = _e3338;
-                            phi_646_ = _e3340;
-                            phi_648_ = _e3342;
-                            phi_2984_ = _e3336;
+                            phi_2837_ = _e3336;
+                            phi_653_ = _e3338;
+                            phi_656_ = _e3340;
+                            phi_658_ = _e3342;
+                            phi_3004_ = _e3336;
                             break if !(_e3343);
                         }
                     }
-                    let _e3346 = phi_2984_;
+                    let _e3346 = phi_3004_;
                     if _e3346 {
                         break;
                     }

@@ -460,249 +460,249 @@ fn function_() {
     var phi_391_: type_16;
     var phi_392_: bool;
     var phi_397_: type_16;
-    var phi_537_: u32;
-    var phi_540_: u32;
-    var phi_576_: u32;
-    var phi_538_: u32;
-    var phi_541_: u32;
-    var phi_2779_: bool;
-    var phi_429_: u32;
-    var phi_432_: u32;
-    var phi_433_: u32;
-    var phi_435_: u32;
-    var phi_463_: u32;
-    var phi_430_: u32;
+    var phi_547_: u32;
+    var phi_550_: u32;
+    var phi_586_: u32;
+    var phi_548_: u32;
+    var phi_551_: u32;
+    var phi_2839_: bool;
     var phi_434_: u32;
-    var phi_436_: u32;
-    var phi_2805_: bool;
-    var phi_480_: u32;
-    var phi_483_: u32;
-    var phi_485_: u32;
-    var phi_500_: u32;
-    var phi_481_: u32;
-    var phi_484_: u32;
-    var phi_486_: u32;
-    var phi_2810_: bool;
-    var phi_2823_: bool;
-    var phi_591_: u32;
-    var phi_2820_: bool;
-    var phi_620_: u32;
-    var phi_623_: u32;
-    var phi_625_: u32;
-    var phi_627_: u32;
-    var phi_629_: u32;
-    var phi_631_: u32;
+    var phi_437_: u32;
+    var phi_438_: u32;
+    var phi_440_: u32;
+    var phi_468_: u32;
+    var phi_435_: u32;
+    var phi_439_: u32;
+    var phi_441_: u32;
+    var phi_2865_: bool;
+    var phi_490_: u32;
+    var phi_493_: u32;
+    var phi_495_: u32;
+    var phi_510_: u32;
+    var phi_491_: u32;
+    var phi_494_: u32;
+    var phi_496_: u32;
+    var phi_2870_: bool;
+    var phi_2882_: bool;
+    var phi_601_: u32;
+    var phi_2879_: bool;
+    var phi_630_: u32;
     var phi_633_: u32;
     var phi_635_: u32;
-    var phi_644_: u32;
-    var phi_647_: u32;
-    var phi_671_: u32;
+    var phi_637_: u32;
+    var phi_639_: u32;
+    var phi_641_: u32;
+    var phi_643_: u32;
     var phi_645_: u32;
-    var phi_648_: u32;
-    var phi_2816_: bool;
-    var phi_2828_: bool;
-    var phi_674_: u32;
-    var phi_677_: u32;
-    var phi_679_: u32;
+    var phi_654_: u32;
+    var phi_657_: u32;
     var phi_681_: u32;
-    var phi_683_: u32;
-    var phi_685_: u32;
-    var phi_687_: type_25;
+    var phi_655_: u32;
+    var phi_658_: u32;
+    var phi_2876_: bool;
+    var phi_2887_: bool;
+    var phi_684_: u32;
+    var phi_687_: u32;
     var phi_689_: u32;
-    var phi_704_: type_25;
-    var phi_730_: type_25;
-    var phi_705_: type_25;
-    var phi_731_: bool;
-    var phi_2824_: bool;
-    var phi_751_: u32;
-    var phi_820_: u32;
-    var phi_823_: u32;
-    var phi_847_: u32;
-    var phi_863_: u32;
-    var phi_869_: u32;
-    var phi_821_: u32;
-    var phi_824_: u32;
-    var phi_2829_: bool;
+    var phi_691_: u32;
+    var phi_693_: u32;
+    var phi_695_: u32;
+    var phi_697_: type_25;
+    var phi_699_: u32;
+    var phi_714_: type_25;
+    var phi_740_: type_25;
+    var phi_715_: type_25;
+    var phi_741_: bool;
+    var phi_2884_: bool;
+    var phi_761_: u32;
+    var phi_830_: u32;
+    var phi_833_: u32;
+    var phi_857_: u32;
     var phi_873_: u32;
-    var phi_876_: u32;
-    var phi_900_: u32;
-    var phi_916_: u32;
-    var phi_922_: u32;
-    var phi_874_: u32;
-    var phi_877_: u32;
-    var phi_2838_: bool;
-    var phi_941_: u32;
-    var phi_981_: u32;
-    var phi_964_: u32;
-    var phi_982_: u32;
-    var phi_2859_: bool;
-    var phi_1094_: type_25;
-    var phi_1096_: type_25;
-    var phi_1118_: u32;
-    var phi_1139_: u32;
-    var phi_1184_: u32;
-    var phi_1165_: u32;
-    var phi_1185_: u32;
-    var phi_1097_: type_25;
-    var phi_2844_: bool;
-    var phi_1792_: u32;
-    var phi_1810_: u32;
-    var phi_1382_: array<f32, 3>;
-    var phi_1393_: f32;
-    var phi_1418_: u32;
-    var phi_1431_: u32;
-    var phi_1465_: type_22;
-    var phi_1476_: f32;
-    var phi_1500_: bool;
-    var phi_1522_: f32;
-    var phi_1523_: f32;
-    var phi_1529_: f32;
-    var phi_1531_: f32;
-    var phi_1632_: u32;
-    var phi_1633_: u32;
-    var phi_1653_: bool;
-    var phi_1667_: u32;
-    var phi_1668_: u32;
-    var phi_1688_: bool;
-    var phi_1702_: u32;
-    var phi_1703_: u32;
-    var phi_1723_: bool;
-    var phi_1737_: u32;
-    var phi_1738_: u32;
-    var phi_1758_: bool;
-    var phi_1770_: u32;
-    var phi_1771_: u32;
-    var phi_1772_: u32;
-    var phi_1773_: u32;
-    var phi_1774_: u32;
-    var phi_1775_: u32;
-    var phi_1812_: u32;
-    var phi_1813_: u32;
-    var phi_1814_: u32;
-    var phi_1815_: u32;
-    var phi_1816_: u32;
-    var phi_1817_: u32;
-    var phi_1818_: u32;
-    var phi_2875_: bool;
-    var phi_1819_: u32;
+    var phi_879_: u32;
+    var phi_831_: u32;
+    var phi_834_: u32;
+    var phi_2889_: bool;
+    var phi_883_: u32;
+    var phi_886_: u32;
+    var phi_910_: u32;
+    var phi_926_: u32;
+    var phi_932_: u32;
+    var phi_884_: u32;
+    var phi_887_: u32;
+    var phi_2898_: bool;
+    var phi_951_: u32;
+    var phi_991_: u32;
+    var phi_974_: u32;
+    var phi_992_: u32;
+    var phi_2907_: bool;
+    var phi_1104_: type_25;
+    var phi_1106_: type_25;
+    var phi_1128_: u32;
+    var phi_1149_: u32;
+    var phi_1194_: u32;
+    var phi_1175_: u32;
+    var phi_1195_: u32;
+    var phi_1107_: type_25;
+    var phi_2904_: bool;
+    var phi_1802_: u32;
     var phi_1820_: u32;
-    var phi_1821_: u32;
+    var phi_1392_: array<f32, 3>;
+    var phi_1403_: f32;
+    var phi_1428_: u32;
+    var phi_1441_: u32;
+    var phi_1475_: type_22;
+    var phi_1486_: f32;
+    var phi_1510_: bool;
+    var phi_1532_: f32;
+    var phi_1533_: f32;
+    var phi_1539_: f32;
+    var phi_1541_: f32;
+    var phi_1642_: u32;
+    var phi_1643_: u32;
+    var phi_1663_: bool;
+    var phi_1677_: u32;
+    var phi_1678_: u32;
+    var phi_1698_: bool;
+    var phi_1712_: u32;
+    var phi_1713_: u32;
+    var phi_1733_: bool;
+    var phi_1747_: u32;
+    var phi_1748_: u32;
+    var phi_1768_: bool;
+    var phi_1780_: u32;
+    var phi_1781_: u32;
+    var phi_1782_: u32;
+    var phi_1783_: u32;
+    var phi_1784_: u32;
+    var phi_1785_: u32;
     var phi_1822_: u32;
     var phi_1823_: u32;
     var phi_1824_: u32;
-    var phi_1825_: type_25;
+    var phi_1825_: u32;
     var phi_1826_: u32;
-    var phi_2874_: bool;
-    var phi_675_: u32;
-    var phi_678_: u32;
-    var phi_680_: u32;
-    var phi_682_: u32;
-    var phi_684_: u32;
-    var phi_686_: u32;
-    var phi_688_: type_25;
+    var phi_1827_: u32;
+    var phi_1828_: u32;
+    var phi_2935_: bool;
+    var phi_1829_: u32;
+    var phi_1830_: u32;
+    var phi_1831_: u32;
+    var phi_1832_: u32;
+    var phi_1833_: u32;
+    var phi_1834_: u32;
+    var phi_1835_: type_25;
+    var phi_1836_: u32;
+    var phi_2934_: bool;
+    var phi_685_: u32;
+    var phi_688_: u32;
     var phi_690_: u32;
-    var phi_1827_: bool;
-    var phi_2873_: bool;
-    var phi_1840_: u32;
-    var phi_2914_: bool;
-    var phi_621_: u32;
-    var phi_624_: u32;
-    var phi_626_: u32;
-    var phi_628_: u32;
-    var phi_630_: u32;
-    var phi_632_: u32;
+    var phi_692_: u32;
+    var phi_694_: u32;
+    var phi_696_: u32;
+    var phi_698_: type_25;
+    var phi_700_: u32;
+    var phi_1837_: bool;
+    var phi_2933_: bool;
+    var phi_1850_: u32;
+    var phi_2974_: bool;
+    var phi_631_: u32;
     var phi_634_: u32;
     var phi_636_: u32;
-    var phi_2913_: bool;
-    var phi_1903_: type_16;
-    var phi_1905_: type_16;
-    var phi_1906_: bool;
-    var phi_1907_: type_16;
-    var phi_1908_: bool;
+    var phi_638_: u32;
+    var phi_640_: u32;
+    var phi_642_: u32;
+    var phi_644_: u32;
+    var phi_646_: u32;
+    var phi_2973_: bool;
     var phi_1913_: type_16;
-    var phi_2000_: u32;
-    var phi_2001_: u32;
-    var phi_2916_: bool;
-    var phi_1925_: u32;
-    var phi_1928_: u32;
-    var phi_1952_: u32;
-    var phi_1926_: u32;
-    var phi_1929_: u32;
-    var phi_2924_: bool;
-    var phi_1995_: u32;
-    var phi_2938_: bool;
-    var phi_2044_: u32;
-    var phi_2061_: type_16;
-    var phi_2063_: type_16;
-    var phi_2064_: bool;
-    var phi_2065_: type_16;
-    var phi_2066_: bool;
-    var phi_2071_: type_16;
-    var phi_2158_: u32;
-    var phi_2159_: u32;
-    var phi_2930_: bool;
-    var phi_2083_: u32;
-    var phi_2086_: u32;
-    var phi_2110_: u32;
-    var phi_2084_: u32;
-    var phi_2087_: u32;
-    var phi_2940_: bool;
-    var phi_2153_: u32;
-    var phi_2954_: bool;
-    var phi_2202_: u32;
-    var phi_2219_: type_16;
-    var phi_2221_: type_16;
-    var phi_2222_: bool;
-    var phi_2223_: type_16;
-    var phi_2224_: bool;
-    var phi_2229_: type_16;
-    var phi_2316_: u32;
-    var phi_2317_: u32;
-    var phi_2946_: bool;
-    var phi_2241_: u32;
-    var phi_2244_: u32;
-    var phi_2268_: u32;
-    var phi_2242_: u32;
-    var phi_2245_: u32;
-    var phi_2956_: bool;
-    var phi_2311_: u32;
-    var phi_2970_: bool;
-    var phi_2360_: u32;
-    var phi_2377_: type_16;
-    var phi_2379_: type_16;
-    var phi_2380_: bool;
-    var phi_2381_: type_16;
-    var phi_2382_: bool;
-    var phi_2387_: type_16;
-    var phi_2474_: u32;
-    var phi_2475_: u32;
-    var phi_2962_: bool;
-    var phi_2399_: u32;
-    var phi_2402_: u32;
-    var phi_2426_: u32;
+    var phi_1915_: type_16;
+    var phi_1916_: bool;
+    var phi_1917_: type_16;
+    var phi_1918_: bool;
+    var phi_1923_: type_16;
+    var phi_2020_: u32;
+    var phi_2021_: u32;
+    var phi_2976_: bool;
+    var phi_1935_: u32;
+    var phi_1938_: u32;
+    var phi_1962_: u32;
+    var phi_1936_: u32;
+    var phi_1939_: u32;
+    var phi_2984_: bool;
+    var phi_2010_: u32;
+    var phi_2995_: bool;
+    var phi_2064_: u32;
+    var phi_2081_: type_16;
+    var phi_2083_: type_16;
+    var phi_2084_: bool;
+    var phi_2085_: type_16;
+    var phi_2086_: bool;
+    var phi_2091_: type_16;
+    var phi_2188_: u32;
+    var phi_2189_: u32;
+    var phi_2990_: bool;
+    var phi_2103_: u32;
+    var phi_2106_: u32;
+    var phi_2130_: u32;
+    var phi_2104_: u32;
+    var phi_2107_: u32;
+    var phi_3000_: bool;
+    var phi_2178_: u32;
+    var phi_3011_: bool;
+    var phi_2232_: u32;
+    var phi_2249_: type_16;
+    var phi_2251_: type_16;
+    var phi_2252_: bool;
+    var phi_2253_: type_16;
+    var phi_2254_: bool;
+    var phi_2259_: type_16;
+    var phi_2356_: u32;
+    var phi_2357_: u32;
+    var phi_3006_: bool;
+    var phi_2271_: u32;
+    var phi_2274_: u32;
+    var phi_2298_: u32;
+    var phi_2272_: u32;
+    var phi_2275_: u32;
+    var phi_3016_: bool;
+    var phi_2346_: u32;
+    var phi_3027_: bool;
     var phi_2400_: u32;
-    var phi_2403_: u32;
-    var phi_2972_: bool;
-    var phi_2469_: u32;
-    var phi_2986_: bool;
-    var phi_2518_: u32;
-    var phi_2535_: type_16;
-    var phi_2537_: type_16;
-    var phi_2538_: bool;
-    var phi_2539_: type_16;
-    var phi_2540_: bool;
-    var phi_2545_: type_16;
-    var phi_2632_: u32;
-    var phi_2633_: u32;
-    var phi_2978_: bool;
-    var phi_2557_: u32;
-    var phi_2560_: u32;
-    var phi_2584_: u32;
-    var phi_2558_: u32;
-    var phi_2561_: u32;
-    var phi_2988_: bool;
-    var phi_2627_: u32;
-    var phi_2676_: u32;
+    var phi_2417_: type_16;
+    var phi_2419_: type_16;
+    var phi_2420_: bool;
+    var phi_2421_: type_16;
+    var phi_2422_: bool;
+    var phi_2427_: type_16;
+    var phi_2524_: u32;
+    var phi_2525_: u32;
+    var phi_3022_: bool;
+    var phi_2439_: u32;
+    var phi_2442_: u32;
+    var phi_2466_: u32;
+    var phi_2440_: u32;
+    var phi_2443_: u32;
+    var phi_3032_: bool;
+    var phi_2514_: u32;
+    var phi_3043_: bool;
+    var phi_2568_: u32;
+    var phi_2585_: type_16;
+    var phi_2587_: type_16;
+    var phi_2588_: bool;
+    var phi_2589_: type_16;
+    var phi_2590_: bool;
+    var phi_2595_: type_16;
+    var phi_2692_: u32;
+    var phi_2693_: u32;
+    var phi_3038_: bool;
+    var phi_2607_: u32;
+    var phi_2610_: u32;
+    var phi_2634_: u32;
+    var phi_2608_: u32;
+    var phi_2611_: u32;
+    var phi_3048_: bool;
+    var phi_2682_: u32;
+    var phi_2736_: u32;
     var local_336: u32;
     var local_337: u32;
     var local_338: u32;
@@ -1024,15 +1024,15 @@ fn function_() {
                 global_15[_e732] = _e734;
                 storageBarrier();
                 workgroupBarrier();
-                phi_429_ = 768u;
-                phi_432_ = 1024u;
-                phi_433_ = 256u;
-                phi_435_ = 0u;
+                phi_434_ = 768u;
+                phi_437_ = 1024u;
+                phi_438_ = 256u;
+                phi_440_ = 0u;
                 loop {
-                    let _e736 = phi_429_;
-                    let _e738 = phi_432_;
-                    let _e740 = phi_433_;
-                    let _e742 = phi_435_;
+                    let _e736 = phi_434_;
+                    let _e738 = phi_437_;
+                    let _e740 = phi_438_;
+                    let _e742 = phi_440_;
                     local_45 = _e736;
                     local_46 = _e738;
                     local_47 = _e740;
@@ -1062,16 +1062,16 @@ fn function_() {
                             local_53 = _e760;
                             if (_e760 < 1792u) {
                             } else {
-                                phi_2805_ = true;
+                                phi_2865_ = true;
                                 break;
                             }
                             let _e762 = local_53;
                             let _e764 = global_15[_e762];
-                            phi_463_ = _e764;
+                            phi_468_ = _e764;
                         } else {
-                            phi_463_ = 0u;
+                            phi_468_ = 0u;
                         }
-                        let _e766 = phi_463_;
+                        let _e766 = phi_468_;
                         let _e767 = subgroupInclusiveAdd(_e766);
                         local_54 = _e767;
                         let _e768 = local_52;
@@ -1082,7 +1082,7 @@ fn function_() {
                             local_55 = _e771;
                             if (_e771 < 1792u) {
                             } else {
-                                phi_2805_ = true;
+                                phi_2865_ = true;
                                 break;
                             }
                             let _e773 = local_55;
@@ -1094,42 +1094,42 @@ fn function_() {
                         let _e776 = local_45;
                         let _e777 = local_51;
                         let _e779 = local_48;
-                        phi_430_ = (_e776 + _e777);
-                        phi_434_ = _e750;
-                        phi_436_ = (_e779 + 1u);
+                        phi_435_ = (_e776 + _e777);
+                        phi_439_ = _e750;
+                        phi_441_ = (_e779 + 1u);
                     } else {
-                        phi_430_ = u32();
-                        phi_434_ = u32();
-                        phi_436_ = u32();
+                        phi_435_ = u32();
+                        phi_439_ = u32();
+                        phi_441_ = u32();
                     }
-                    let _e782 = phi_430_;
-                    let _e784 = phi_434_;
-                    let _e786 = phi_436_;
+                    let _e782 = phi_435_;
+                    let _e784 = phi_439_;
+                    let _e786 = phi_441_;
                     continue;
                     continuing {
                         let _e787 = local_49;
-                        phi_429_ = _e782;
-                        phi_432_ = _e736;
-                        phi_433_ = _e784;
-                        phi_435_ = _e786;
-                        phi_2805_ = false;
+                        phi_434_ = _e782;
+                        phi_437_ = _e736;
+                        phi_438_ = _e784;
+                        phi_440_ = _e786;
+                        phi_2865_ = false;
                         break if !(_e787);
                     }
                 }
-                let _e790 = phi_2805_;
+                let _e790 = phi_2865_;
                 if _e790 {
                     break;
                 }
                 let _e3306 = local_336;
-                phi_480_ = _e3306;
+                phi_490_ = _e3306;
                 let _e3309 = local_337;
-                phi_483_ = _e3309;
+                phi_493_ = _e3309;
                 let _e3312 = local_338;
-                phi_485_ = _e3312;
+                phi_495_ = _e3312;
                 loop {
-                    let _e792 = phi_480_;
-                    let _e794 = phi_483_;
-                    let _e796 = phi_485_;
+                    let _e792 = phi_490_;
+                    let _e794 = phi_493_;
+                    let _e796 = phi_495_;
                     local_56 = _e792;
                     local_57 = _e794;
                     local_58 = _e796;
@@ -1145,13 +1145,13 @@ fn function_() {
                         local_61 = _e803;
                         let _e804 = local_58;
                         if (_e804 == 1u) {
-                            phi_500_ = 1024u;
+                            phi_510_ = 1024u;
                         } else {
                             let _e806 = local_56;
                             let _e807 = local_61;
-                            phi_500_ = (_e806 - _e807);
+                            phi_510_ = (_e806 - _e807);
                         }
-                        let _e810 = phi_500_;
+                        let _e810 = phi_510_;
                         local_62 = _e810;
                         let _e811 = local;
                         let _e812 = local_39;
@@ -1169,7 +1169,7 @@ fn function_() {
                                 local_64 = _e826;
                                 if (_e826 < 1792u) {
                                 } else {
-                                    phi_2810_ = true;
+                                    phi_2870_ = true;
                                     break;
                                 }
                                 let _e828 = local_64;
@@ -1180,7 +1180,7 @@ fn function_() {
                                 local_66 = _e832;
                                 if _e832 {
                                 } else {
-                                    phi_2810_ = true;
+                                    phi_2870_ = true;
                                     break;
                                 }
                                 let _e833 = local_63;
@@ -1190,7 +1190,7 @@ fn function_() {
                                 let _e838 = local_66;
                                 if _e838 {
                                 } else {
-                                    phi_2810_ = true;
+                                    phi_2870_ = true;
                                     break;
                                 }
                                 let _e839 = local_67;
@@ -1200,39 +1200,39 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e840 = local_58;
-                        phi_481_ = _e810;
-                        phi_484_ = _e803;
-                        phi_486_ = (_e840 - 1u);
+                        phi_491_ = _e810;
+                        phi_494_ = _e803;
+                        phi_496_ = (_e840 - 1u);
                     } else {
-                        phi_481_ = u32();
-                        phi_484_ = u32();
-                        phi_486_ = u32();
+                        phi_491_ = u32();
+                        phi_494_ = u32();
+                        phi_496_ = u32();
                     }
-                    let _e843 = phi_481_;
-                    let _e845 = phi_484_;
-                    let _e847 = phi_486_;
+                    let _e843 = phi_491_;
+                    let _e845 = phi_494_;
+                    let _e847 = phi_496_;
                     continue;
                     continuing {
                         let _e848 = local_59;
-                        phi_480_ = _e843;
-                        phi_483_ = _e845;
-                        phi_485_ = _e847;
-                        phi_2810_ = _e790;
+                        phi_490_ = _e843;
+                        phi_493_ = _e845;
+                        phi_495_ = _e847;
+                        phi_2870_ = _e790;
                         break if !(_e848);
                     }
                 }
-                let _e851 = phi_2810_;
+                let _e851 = phi_2870_;
                 if _e851 {
                     break;
                 }
-                phi_2823_ = _e851;
-                phi_591_ = 1024u;
+                phi_2882_ = _e851;
+                phi_601_ = 1024u;
             } else {
-                phi_537_ = 1u;
-                phi_540_ = 768u;
+                phi_547_ = 1u;
+                phi_550_ = 768u;
                 loop {
-                    let _e665 = phi_537_;
-                    let _e667 = phi_540_;
+                    let _e665 = phi_547_;
+                    let _e667 = phi_550_;
                     local_68 = _e665;
                     local_69 = _e667;
                     local_339 = _e667;
@@ -1249,7 +1249,7 @@ fn function_() {
                         local_71 = _e675;
                         if (_e675 < 1792u) {
                         } else {
-                            phi_2779_ = true;
+                            phi_2839_ = true;
                             break;
                         }
                         let _e677 = local_71;
@@ -1265,17 +1265,17 @@ fn function_() {
                             local_73 = _e687;
                             if (_e687 < 1792u) {
                             } else {
-                                phi_2779_ = true;
+                                phi_2839_ = true;
                                 break;
                             }
                             let _e689 = local_73;
                             let _e691 = global_15[_e689];
                             let _e692 = local_72;
-                            phi_576_ = (_e691 + _e692);
+                            phi_586_ = (_e691 + _e692);
                         } else {
-                            phi_576_ = _e679;
+                            phi_586_ = _e679;
                         }
-                        let _e695 = phi_576_;
+                        let _e695 = phi_586_;
                         local_74 = _e695;
                         let _e696 = local_329;
                         let _e697 = local;
@@ -1283,7 +1283,7 @@ fn function_() {
                         local_75 = _e698;
                         if (_e698 < 1792u) {
                         } else {
-                            phi_2779_ = true;
+                            phi_2839_ = true;
                             break;
                         }
                         let _e700 = local_75;
@@ -1292,33 +1292,33 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e703 = local_68;
-                        phi_538_ = (_e703 * 2u);
-                        phi_541_ = _e672;
+                        phi_548_ = (_e703 * 2u);
+                        phi_551_ = _e672;
                     } else {
-                        phi_538_ = u32();
-                        phi_541_ = u32();
+                        phi_548_ = u32();
+                        phi_551_ = u32();
                     }
-                    let _e706 = phi_538_;
-                    let _e708 = phi_541_;
+                    let _e706 = phi_548_;
+                    let _e708 = phi_551_;
                     continue;
                     continuing {
                         let _e709 = local_70;
-                        phi_537_ = _e706;
-                        phi_540_ = _e708;
-                        phi_2779_ = false;
+                        phi_547_ = _e706;
+                        phi_550_ = _e708;
+                        phi_2839_ = false;
                         break if !(_e709);
                     }
                 }
-                let _e712 = phi_2779_;
+                let _e712 = phi_2839_;
                 if _e712 {
                     break;
                 }
-                phi_2823_ = _e712;
+                phi_2882_ = _e712;
                 let _e3321 = local_339;
-                phi_591_ = _e3321;
+                phi_601_ = _e3321;
             }
-            let _e853 = phi_2823_;
-            let _e855 = phi_591_;
+            let _e853 = phi_2882_;
+            let _e855 = phi_601_;
             local_76 = _e855;
             let _e856 = (_e855 + 255u);
             local_77 = _e856;
@@ -1337,25 +1337,25 @@ fn function_() {
             let _e872 = local_76;
             local_331 = select(768u, 1024u, (_e872 == 768u));
             let _e875 = local;
-            phi_2820_ = _e853;
-            phi_620_ = 0u;
-            phi_623_ = 0u;
-            phi_625_ = 0u;
-            phi_627_ = 0u;
-            phi_629_ = 0u;
-            phi_631_ = (_e875 * _e865);
+            phi_2879_ = _e853;
+            phi_630_ = 0u;
             phi_633_ = 0u;
             phi_635_ = 0u;
+            phi_637_ = 0u;
+            phi_639_ = 0u;
+            phi_641_ = (_e875 * _e865);
+            phi_643_ = 0u;
+            phi_645_ = 0u;
             loop {
-                let _e878 = phi_2820_;
-                let _e880 = phi_620_;
-                let _e882 = phi_623_;
-                let _e884 = phi_625_;
-                let _e886 = phi_627_;
-                let _e888 = phi_629_;
-                let _e890 = phi_631_;
-                let _e892 = phi_633_;
-                let _e894 = phi_635_;
+                let _e878 = phi_2879_;
+                let _e880 = phi_630_;
+                let _e882 = phi_633_;
+                let _e884 = phi_635_;
+                let _e886 = phi_637_;
+                let _e888 = phi_639_;
+                let _e890 = phi_641_;
+                let _e892 = phi_643_;
+                let _e894 = phi_645_;
                 local_81 = _e880;
                 local_82 = _e882;
                 local_83 = _e884;
@@ -1369,11 +1369,11 @@ fn function_() {
                 let _e897 = (_e895 < _e896);
                 local_89 = _e897;
                 if _e897 {
-                    phi_644_ = 255u;
-                    phi_647_ = 0u;
+                    phi_654_ = 255u;
+                    phi_657_ = 0u;
                     loop {
-                        let _e899 = phi_644_;
-                        let _e901 = phi_647_;
+                        let _e899 = phi_654_;
+                        let _e901 = phi_657_;
                         local_90 = _e899;
                         local_91 = _e901;
                         let _e902 = local_91;
@@ -1390,7 +1390,7 @@ fn function_() {
                             local_94 = _e910;
                             if (_e910 < 1792u) {
                             } else {
-                                phi_2816_ = true;
+                                phi_2876_ = true;
                                 break;
                             }
                             let _e912 = local_94;
@@ -1399,59 +1399,59 @@ fn function_() {
                             let _e916 = (_e914 > _e915);
                             local_95 = _e916;
                             if _e916 {
-                                phi_671_ = _e901;
+                                phi_681_ = _e901;
                             } else {
                                 let _e917 = local_93;
-                                phi_671_ = (_e917 + 1u);
+                                phi_681_ = (_e917 + 1u);
                             }
-                            let _e920 = phi_671_;
+                            let _e920 = phi_681_;
                             let _e921 = local_95;
                             let _e922 = local_93;
                             let _e923 = local_90;
-                            phi_645_ = select(_e923, _e922, _e921);
-                            phi_648_ = _e920;
+                            phi_655_ = select(_e923, _e922, _e921);
+                            phi_658_ = _e920;
                         } else {
-                            phi_645_ = u32();
-                            phi_648_ = u32();
+                            phi_655_ = u32();
+                            phi_658_ = u32();
                         }
-                        let _e926 = phi_645_;
-                        let _e928 = phi_648_;
+                        let _e926 = phi_655_;
+                        let _e928 = phi_658_;
                         continue;
                         continuing {
                             let _e929 = local_92;
-                            phi_644_ = _e926;
-                            phi_647_ = _e928;
-                            phi_2816_ = _e878;
+                            phi_654_ = _e926;
+                            phi_657_ = _e928;
+                            phi_2876_ = _e878;
                             break if !(_e929);
                         }
                     }
-                    let _e932 = phi_2816_;
-                    phi_2913_ = _e932;
+                    let _e932 = phi_2876_;
+                    phi_2973_ = _e932;
                     if _e932 {
                         break;
                     }
                     let _e933 = local_91;
                     let _e934 = local_13;
                     let _e935 = local_14;
-                    phi_2828_ = _e932;
-                    phi_674_ = 0u;
-                    phi_677_ = _e880;
-                    phi_679_ = _e882;
-                    phi_681_ = _e884;
-                    phi_683_ = _e886;
-                    phi_685_ = _e888;
-                    phi_687_ = type_25(_e933, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e934, _e935, false);
-                    phi_689_ = 0u;
+                    phi_2887_ = _e932;
+                    phi_684_ = 0u;
+                    phi_687_ = _e880;
+                    phi_689_ = _e882;
+                    phi_691_ = _e884;
+                    phi_693_ = _e886;
+                    phi_695_ = _e888;
+                    phi_697_ = type_25(_e933, 4294967295u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, _e934, _e935, false);
+                    phi_699_ = 0u;
                     loop {
-                        let _e938 = phi_2828_;
-                        let _e940 = phi_674_;
-                        let _e942 = phi_677_;
-                        let _e944 = phi_679_;
-                        let _e946 = phi_681_;
-                        let _e948 = phi_683_;
-                        let _e950 = phi_685_;
-                        let _e952 = phi_687_;
-                        let _e954 = phi_689_;
+                        let _e938 = phi_2887_;
+                        let _e940 = phi_684_;
+                        let _e942 = phi_687_;
+                        let _e944 = phi_689_;
+                        let _e946 = phi_691_;
+                        let _e948 = phi_693_;
+                        let _e950 = phi_695_;
+                        let _e952 = phi_697_;
+                        let _e954 = phi_699_;
                         local_96 = _e940;
                         local_97 = _e942;
                         local_98 = _e944;
@@ -1474,9 +1474,9 @@ fn function_() {
                             let _e961 = local_78;
                             let _e962 = (_e960 < _e961);
                             if _e962 {
-                                phi_704_ = _e952;
+                                phi_714_ = _e952;
                                 loop {
-                                    let _e964 = phi_704_;
+                                    let _e964 = phi_714_;
                                     local_104 = _e964;
                                     local_340 = _e964;
                                     let _e965 = local_104;
@@ -1488,7 +1488,7 @@ fn function_() {
                                         local_106 = _e970;
                                         if (_e970 < 1792u) {
                                         } else {
-                                            phi_2824_ = true;
+                                            phi_2884_ = true;
                                             break;
                                         }
                                         let _e972 = local_106;
@@ -1498,36 +1498,36 @@ fn function_() {
                                         if _e976 {
                                             let _e977 = local_105;
                                             let _e979 = local_104;
-                                            phi_730_ = type_25((_e977 + 1u), _e979.member_1, _e979.member_2, _e979.member_3, _e979.member_4, _e979.member_5, _e979.member_6, _e979.member_7, _e979.member_8, _e979.member_9, _e979.member_10, _e979.member_11, _e979.member_12, _e979.member_13, _e979.member_14);
+                                            phi_740_ = type_25((_e977 + 1u), _e979.member_1, _e979.member_2, _e979.member_3, _e979.member_4, _e979.member_5, _e979.member_6, _e979.member_7, _e979.member_8, _e979.member_9, _e979.member_10, _e979.member_11, _e979.member_12, _e979.member_13, _e979.member_14);
                                         } else {
-                                            phi_730_ = type_25();
+                                            phi_740_ = type_25();
                                         }
-                                        let _e997 = phi_730_;
-                                        phi_705_ = _e997;
-                                        phi_731_ = _e976;
+                                        let _e997 = phi_740_;
+                                        phi_715_ = _e997;
+                                        phi_741_ = _e976;
                                     } else {
-                                        phi_705_ = type_25();
-                                        phi_731_ = false;
+                                        phi_715_ = type_25();
+                                        phi_741_ = false;
                                     }
-                                    let _e999 = phi_705_;
-                                    let _e1001 = phi_731_;
+                                    let _e999 = phi_715_;
+                                    let _e1001 = phi_741_;
                                     local_107 = _e1001;
                                     continue;
                                     continuing {
                                         let _e1002 = local_107;
-                                        phi_704_ = _e999;
-                                        phi_2824_ = _e938;
+                                        phi_714_ = _e999;
+                                        phi_2884_ = _e938;
                                         break if !(_e1002);
                                     }
                                 }
-                                let _e1005 = phi_2824_;
-                                phi_2873_ = _e1005;
+                                let _e1005 = phi_2884_;
+                                phi_2933_ = _e1005;
                                 if _e1005 {
                                     break;
                                 }
                                 let _e1006 = local_105;
                                 if (_e1006 == 0u) {
-                                    phi_751_ = 0u;
+                                    phi_761_ = 0u;
                                 } else {
                                     let _e1008 = local_76;
                                     let _e1009 = local_105;
@@ -1535,14 +1535,14 @@ fn function_() {
                                     local_108 = _e1011;
                                     if (_e1011 < 1792u) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1013 = local_108;
                                     let _e1015 = global_15[_e1013];
-                                    phi_751_ = _e1015;
+                                    phi_761_ = _e1015;
                                 }
-                                let _e1017 = phi_751_;
+                                let _e1017 = phi_761_;
                                 let _e1018 = local_103;
                                 local_109 = (_e1018 - _e1017);
                                 let _e1020 = local_104;
@@ -1553,7 +1553,7 @@ fn function_() {
                                     let _e1026 = local_15;
                                     local_111 = _e1026.member_3;
                                     if (_e1026.member_3 == 0u) {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1029 = local_110;
@@ -1564,7 +1564,7 @@ fn function_() {
                                     local_113 = _e1033;
                                     if (_e1033 < 1792u) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1035 = local_113;
@@ -1574,7 +1574,7 @@ fn function_() {
                                     let _e1039 = (_e1038 == 0u);
                                     local_115 = _e1039;
                                     if _e1039 {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1040 = local_114;
@@ -1583,7 +1583,7 @@ fn function_() {
                                     local_116 = ((_e1040 % _e1041) * _e1043);
                                     let _e1045 = local_115;
                                     if _e1045 {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1046 = local_114;
@@ -1620,11 +1620,11 @@ fn function_() {
                                     let _e1168 = select(_e1167, _e1164, (_e1164 < _e1165));
                                     local_333 = _e1168;
                                     local_121 = type_25(_e1161.member, _e1161.member_1, _e1161.member_2, _e1161.member_3, _e1161.member_4, _e1161.member_5, _e1161.member_6, _e1168, _e1161.member_8, _e1161.member_9, _e1161.member_10, _e1161.member_11, _e1161.member_12, _e1161.member_13, _e1161.member_14);
-                                    phi_820_ = (_e1168 - 1u);
-                                    phi_823_ = 0u;
+                                    phi_830_ = (_e1168 - 1u);
+                                    phi_833_ = 0u;
                                     loop {
-                                        let _e1187 = phi_820_;
-                                        let _e1189 = phi_823_;
+                                        let _e1187 = phi_830_;
+                                        let _e1189 = phi_833_;
                                         local_122 = _e1187;
                                         local_123 = _e1189;
                                         let _e1190 = local_123;
@@ -1639,11 +1639,11 @@ fn function_() {
                                             local_125 = _e1196;
                                             if ((_e1195 % 2u) > 0u) {
                                                 let _e1199 = local_125;
-                                                phi_847_ = (_e1199 + 1u);
+                                                phi_857_ = (_e1199 + 1u);
                                             } else {
-                                                phi_847_ = _e1196;
+                                                phi_857_ = _e1196;
                                             }
-                                            let _e1202 = phi_847_;
+                                            let _e1202 = phi_857_;
                                             local_126 = _e1202;
                                             let _e1203 = local_333;
                                             if (_e1202 < _e1203) {
@@ -1655,57 +1655,57 @@ fn function_() {
                                                 let _e1210 = local_7;
                                                 if (_e1209 < _e1210) {
                                                 } else {
-                                                    phi_2829_ = true;
+                                                    phi_2889_ = true;
                                                     break;
                                                 }
                                                 let _e1212 = local_127;
                                                 let _e1215 = global_10.member[_e1212];
-                                                phi_863_ = _e1215;
+                                                phi_873_ = _e1215;
                                             } else {
-                                                phi_863_ = 4294967295u;
+                                                phi_873_ = 4294967295u;
                                             }
-                                            let _e1217 = phi_863_;
+                                            let _e1217 = phi_873_;
                                             let _e1218 = local_109;
                                             let _e1219 = (_e1217 <= _e1218);
                                             local_128 = _e1219;
                                             if _e1219 {
-                                                phi_869_ = _e1187;
+                                                phi_879_ = _e1187;
                                             } else {
                                                 let _e1220 = local_126;
-                                                phi_869_ = (_e1220 - 1u);
+                                                phi_879_ = (_e1220 - 1u);
                                             }
-                                            let _e1223 = phi_869_;
+                                            let _e1223 = phi_879_;
                                             let _e1224 = local_128;
                                             let _e1225 = local_126;
                                             let _e1226 = local_123;
-                                            phi_821_ = _e1223;
-                                            phi_824_ = select(_e1226, _e1225, _e1224);
+                                            phi_831_ = _e1223;
+                                            phi_834_ = select(_e1226, _e1225, _e1224);
                                         } else {
-                                            phi_821_ = u32();
-                                            phi_824_ = u32();
+                                            phi_831_ = u32();
+                                            phi_834_ = u32();
                                         }
-                                        let _e1229 = phi_821_;
-                                        let _e1231 = phi_824_;
+                                        let _e1229 = phi_831_;
+                                        let _e1231 = phi_834_;
                                         continue;
                                         continuing {
                                             let _e1232 = local_124;
-                                            phi_820_ = _e1229;
-                                            phi_823_ = _e1231;
-                                            phi_2829_ = _e1005;
+                                            phi_830_ = _e1229;
+                                            phi_833_ = _e1231;
+                                            phi_2889_ = _e1005;
                                             break if !(_e1232);
                                         }
                                     }
-                                    let _e1235 = phi_2829_;
-                                    phi_2873_ = _e1235;
+                                    let _e1235 = phi_2889_;
+                                    phi_2933_ = _e1235;
                                     if _e1235 {
                                         break;
                                     }
                                     let _e1236 = local_332;
-                                    phi_873_ = (_e1236 - 1u);
-                                    phi_876_ = 0u;
+                                    phi_883_ = (_e1236 - 1u);
+                                    phi_886_ = 0u;
                                     loop {
-                                        let _e1239 = phi_873_;
-                                        let _e1241 = phi_876_;
+                                        let _e1239 = phi_883_;
+                                        let _e1241 = phi_886_;
                                         local_129 = _e1239;
                                         local_130 = _e1241;
                                         let _e1242 = local_130;
@@ -1720,11 +1720,11 @@ fn function_() {
                                             local_132 = _e1248;
                                             if ((_e1247 % 2u) > 0u) {
                                                 let _e1251 = local_132;
-                                                phi_900_ = (_e1251 + 1u);
+                                                phi_910_ = (_e1251 + 1u);
                                             } else {
-                                                phi_900_ = _e1248;
+                                                phi_910_ = _e1248;
                                             }
-                                            let _e1254 = phi_900_;
+                                            let _e1254 = phi_910_;
                                             local_133 = _e1254;
                                             let _e1255 = local_123;
                                             let _e1256 = local_333;
@@ -1738,48 +1738,48 @@ fn function_() {
                                                 let _e1265 = local_7;
                                                 if (_e1264 < _e1265) {
                                                 } else {
-                                                    phi_2838_ = true;
+                                                    phi_2898_ = true;
                                                     break;
                                                 }
                                                 let _e1267 = local_134;
                                                 let _e1270 = global_10.member[_e1267];
-                                                phi_916_ = _e1270;
+                                                phi_926_ = _e1270;
                                             } else {
-                                                phi_916_ = 4294967295u;
+                                                phi_926_ = 4294967295u;
                                             }
-                                            let _e1272 = phi_916_;
+                                            let _e1272 = phi_926_;
                                             let _e1273 = local_109;
                                             let _e1274 = (_e1272 <= _e1273);
                                             local_135 = _e1274;
                                             if _e1274 {
-                                                phi_922_ = _e1239;
+                                                phi_932_ = _e1239;
                                             } else {
                                                 let _e1275 = local_133;
-                                                phi_922_ = (_e1275 - 1u);
+                                                phi_932_ = (_e1275 - 1u);
                                             }
-                                            let _e1278 = phi_922_;
+                                            let _e1278 = phi_932_;
                                             let _e1279 = local_135;
                                             let _e1280 = local_133;
                                             let _e1281 = local_130;
-                                            phi_874_ = _e1278;
-                                            phi_877_ = select(_e1281, _e1280, _e1279);
+                                            phi_884_ = _e1278;
+                                            phi_887_ = select(_e1281, _e1280, _e1279);
                                         } else {
-                                            phi_874_ = u32();
-                                            phi_877_ = u32();
+                                            phi_884_ = u32();
+                                            phi_887_ = u32();
                                         }
-                                        let _e1284 = phi_874_;
-                                        let _e1286 = phi_877_;
+                                        let _e1284 = phi_884_;
+                                        let _e1286 = phi_887_;
                                         continue;
                                         continuing {
                                             let _e1287 = local_131;
-                                            phi_873_ = _e1284;
-                                            phi_876_ = _e1286;
-                                            phi_2838_ = _e1235;
+                                            phi_883_ = _e1284;
+                                            phi_886_ = _e1286;
+                                            phi_2898_ = _e1235;
                                             break if !(_e1287);
                                         }
                                     }
-                                    let _e1290 = phi_2838_;
-                                    phi_2873_ = _e1290;
+                                    let _e1290 = phi_2898_;
+                                    phi_2933_ = _e1290;
                                     if _e1290 {
                                         break;
                                     }
@@ -1802,16 +1802,16 @@ fn function_() {
                                         let _e1336 = local_7;
                                         if (_e1335 < _e1336) {
                                         } else {
-                                            phi_2873_ = true;
+                                            phi_2933_ = true;
                                             break;
                                         }
                                         let _e1338 = local_138;
                                         let _e1341 = global_10.member[_e1338];
-                                        phi_941_ = _e1341;
+                                        phi_951_ = _e1341;
                                     } else {
-                                        phi_941_ = 4294967295u;
+                                        phi_951_ = 4294967295u;
                                     }
-                                    let _e1343 = phi_941_;
+                                    let _e1343 = phi_951_;
                                     let _e1344 = local_136;
                                     local_139 = type_25(_e1344.member, _e1344.member_1, _e1344.member_2, _e1344.member_3, _e1344.member_4, _e1344.member_5, _e1344.member_6, _e1344.member_7, _e1344.member_8, _e1344.member_9, _e1343, _e1344.member_11, _e1344.member_12, _e1344.member_13, _e1344.member_14);
                                     let _e1361 = local_130;
@@ -1830,17 +1830,17 @@ fn function_() {
                                             let _e1390 = local_7;
                                             if (_e1389 < _e1390) {
                                             } else {
-                                                phi_2873_ = true;
+                                                phi_2933_ = true;
                                                 break;
                                             }
                                             let _e1392 = local_141;
                                             let _e1395 = global_10.member[_e1392];
-                                            phi_964_ = _e1395;
+                                            phi_974_ = _e1395;
                                         } else {
-                                            phi_964_ = 4294967295u;
+                                            phi_974_ = 4294967295u;
                                         }
-                                        let _e1397 = phi_964_;
-                                        phi_982_ = _e1397;
+                                        let _e1397 = phi_974_;
+                                        phi_992_ = _e1397;
                                     } else {
                                         let _e1365 = local_123;
                                         let _e1366 = (_e1365 + 1u);
@@ -1855,19 +1855,19 @@ fn function_() {
                                             let _e1374 = local_7;
                                             if (_e1373 < _e1374) {
                                             } else {
-                                                phi_2873_ = true;
+                                                phi_2933_ = true;
                                                 break;
                                             }
                                             let _e1376 = local_143;
                                             let _e1379 = global_10.member[_e1376];
-                                            phi_981_ = _e1379;
+                                            phi_991_ = _e1379;
                                         } else {
-                                            phi_981_ = 4294967295u;
+                                            phi_991_ = 4294967295u;
                                         }
-                                        let _e1381 = phi_981_;
-                                        phi_982_ = _e1381;
+                                        let _e1381 = phi_991_;
+                                        phi_992_ = _e1381;
                                     }
-                                    let _e1399 = phi_982_;
+                                    let _e1399 = phi_992_;
                                     let _e1400 = local_139;
                                     local_144 = type_25(_e1400.member, _e1400.member_1, _e1400.member_2, _e1400.member_3, _e1400.member_4, _e1400.member_5, _e1400.member_6, _e1400.member_7, _e1400.member_8, _e1400.member_9, _e1400.member_10, _e1399, _e1400.member_12, _e1400.member_13, _e1400.member_14);
                                     let _e1417 = local_118;
@@ -1881,7 +1881,7 @@ fn function_() {
                                     let _e1428 = local_7;
                                     if (_e1427 < _e1428) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1430 = local_145;
@@ -1918,18 +1918,18 @@ fn function_() {
                                     let _e1498 = select(_e1496, _e1495, (_e1495 > _e1496));
                                     let _e1500 = select(0f, _e1498, (_e1498 > 0f));
                                     let _e1506 = local_144;
-                                    phi_2859_ = _e1290;
-                                    phi_1094_ = type_25(_e1506.member, _e1506.member_1, _e1506.member_2, _e1506.member_3, _e1506.member_4, _e1506.member_5, _e1506.member_6, _e1506.member_7, _e1506.member_8, _e1506.member_9, _e1506.member_10, _e1506.member_11, _e1506.member_12, _e1506.member_13, (((_e1492 * _e1492) + (_e1500 * _e1500)) <= (_e1434 * _e1434)));
+                                    phi_2907_ = _e1290;
+                                    phi_1104_ = type_25(_e1506.member, _e1506.member_1, _e1506.member_2, _e1506.member_3, _e1506.member_4, _e1506.member_5, _e1506.member_6, _e1506.member_7, _e1506.member_8, _e1506.member_9, _e1506.member_10, _e1506.member_11, _e1506.member_12, _e1506.member_13, (((_e1492 * _e1492) + (_e1500 * _e1500)) <= (_e1434 * _e1434)));
                                 } else {
-                                    phi_2859_ = _e1005;
+                                    phi_2907_ = _e1005;
                                     let _e3375 = local_340;
-                                    phi_1094_ = _e3375;
+                                    phi_1104_ = _e3375;
                                 }
-                                let _e1524 = phi_2859_;
-                                let _e1526 = phi_1094_;
-                                phi_1096_ = _e1526;
+                                let _e1524 = phi_2907_;
+                                let _e1526 = phi_1104_;
+                                phi_1106_ = _e1526;
                                 loop {
-                                    let _e1528 = phi_1096_;
+                                    let _e1528 = phi_1106_;
                                     local_146 = _e1528;
                                     local_341 = _e1528;
                                     let _e1529 = local_146;
@@ -1947,12 +1947,12 @@ fn function_() {
                                         local_151 = _e1538;
                                         if _e1538 {
                                             let _e1542 = local_146;
-                                            phi_1118_ = _e1542.member_9;
+                                            phi_1128_ = _e1542.member_9;
                                         } else {
                                             let _e1539 = local_146;
-                                            phi_1118_ = (_e1539.member_9 + 1u);
+                                            phi_1128_ = (_e1539.member_9 + 1u);
                                         }
-                                        let _e1545 = phi_1118_;
+                                        let _e1545 = phi_1128_;
                                         local_152 = _e1545;
                                         let _e1546 = local_151;
                                         let _e1547 = local_149;
@@ -1975,16 +1975,16 @@ fn function_() {
                                             let _e1594 = local_7;
                                             if (_e1593 < _e1594) {
                                             } else {
-                                                phi_2844_ = true;
+                                                phi_2904_ = true;
                                                 break;
                                             }
                                             let _e1596 = local_156;
                                             let _e1599 = global_10.member[_e1596];
-                                            phi_1139_ = _e1599;
+                                            phi_1149_ = _e1599;
                                         } else {
-                                            phi_1139_ = 4294967295u;
+                                            phi_1149_ = 4294967295u;
                                         }
-                                        let _e1601 = phi_1139_;
+                                        let _e1601 = phi_1149_;
                                         let _e1602 = local_153;
                                         local_157 = type_25(_e1602.member, _e1602.member_1, _e1602.member_2, _e1602.member_3, _e1602.member_4, _e1602.member_5, _e1602.member_6, _e1602.member_7, _e1602.member_8, _e1602.member_9, _e1601, _e1602.member_11, _e1602.member_12, _e1602.member_13, _e1602.member_14);
                                         let _e1619 = local_334;
@@ -2003,17 +2003,17 @@ fn function_() {
                                                 let _e1652 = local_7;
                                                 if (_e1651 < _e1652) {
                                                 } else {
-                                                    phi_2844_ = true;
+                                                    phi_2904_ = true;
                                                     break;
                                                 }
                                                 let _e1654 = local_159;
                                                 let _e1657 = global_10.member[_e1654];
-                                                phi_1165_ = _e1657;
+                                                phi_1175_ = _e1657;
                                             } else {
-                                                phi_1165_ = 4294967295u;
+                                                phi_1175_ = 4294967295u;
                                             }
-                                            let _e1659 = phi_1165_;
-                                            phi_1185_ = _e1659;
+                                            let _e1659 = phi_1175_;
+                                            phi_1195_ = _e1659;
                                         } else {
                                             let _e1623 = local_152;
                                             let _e1624 = (_e1623 + 1u);
@@ -2028,19 +2028,19 @@ fn function_() {
                                                 let _e1634 = local_7;
                                                 if (_e1633 < _e1634) {
                                                 } else {
-                                                    phi_2844_ = true;
+                                                    phi_2904_ = true;
                                                     break;
                                                 }
                                                 let _e1636 = local_161;
                                                 let _e1639 = global_10.member[_e1636];
-                                                phi_1184_ = _e1639;
+                                                phi_1194_ = _e1639;
                                             } else {
-                                                phi_1184_ = 4294967295u;
+                                                phi_1194_ = 4294967295u;
                                             }
-                                            let _e1641 = phi_1184_;
-                                            phi_1185_ = _e1641;
+                                            let _e1641 = phi_1194_;
+                                            phi_1195_ = _e1641;
                                         }
-                                        let _e1661 = phi_1185_;
+                                        let _e1661 = phi_1195_;
                                         let _e1662 = local_157;
                                         local_162 = type_25(_e1662.member, _e1662.member_1, _e1662.member_2, _e1662.member_3, _e1662.member_4, _e1662.member_5, _e1662.member_6, _e1662.member_7, _e1662.member_8, _e1662.member_9, _e1662.member_10, _e1661, _e1662.member_12, _e1662.member_13, _e1662.member_14);
                                         let _e1679 = local_15;
@@ -2053,7 +2053,7 @@ fn function_() {
                                         let _e1692 = local_7;
                                         if (_e1691 < _e1692) {
                                         } else {
-                                            phi_2844_ = true;
+                                            phi_2904_ = true;
                                             break;
                                         }
                                         let _e1694 = local_163;
@@ -2084,21 +2084,21 @@ fn function_() {
                                         let _e1760 = select(_e1758, _e1757, (_e1757 > _e1758));
                                         let _e1762 = select(0f, _e1760, (_e1760 > 0f));
                                         let _e1768 = local_162;
-                                        phi_1097_ = type_25(_e1768.member, _e1768.member_1, _e1768.member_2, _e1768.member_3, _e1768.member_4, _e1768.member_5, _e1768.member_6, _e1768.member_7, _e1768.member_8, _e1768.member_9, _e1768.member_10, _e1768.member_11, _e1768.member_12, _e1768.member_13, (((_e1754 * _e1754) + (_e1762 * _e1762)) <= (_e1698 * _e1698)));
+                                        phi_1107_ = type_25(_e1768.member, _e1768.member_1, _e1768.member_2, _e1768.member_3, _e1768.member_4, _e1768.member_5, _e1768.member_6, _e1768.member_7, _e1768.member_8, _e1768.member_9, _e1768.member_10, _e1768.member_11, _e1768.member_12, _e1768.member_13, (((_e1754 * _e1754) + (_e1762 * _e1762)) <= (_e1698 * _e1698)));
                                     } else {
-                                        phi_1097_ = type_25();
+                                        phi_1107_ = type_25();
                                     }
-                                    let _e1786 = phi_1097_;
+                                    let _e1786 = phi_1107_;
                                     continue;
                                     continuing {
                                         let _e1787 = local_148;
-                                        phi_1096_ = _e1786;
-                                        phi_2844_ = _e1524;
+                                        phi_1106_ = _e1786;
+                                        phi_2904_ = _e1524;
                                         break if !(_e1787);
                                     }
                                 }
-                                let _e1790 = phi_2844_;
-                                phi_2873_ = _e1790;
+                                let _e1790 = phi_2904_;
+                                phi_2933_ = _e1790;
                                 if _e1790 {
                                     break;
                                 }
@@ -2113,7 +2113,7 @@ fn function_() {
                                 let _e1799 = local_15;
                                 local_168 = _e1799.member_3;
                                 if (_e1799.member_3 == 0u) {
-                                    phi_2873_ = true;
+                                    phi_2933_ = true;
                                     break;
                                 }
                                 let _e1802 = local_167;
@@ -2137,7 +2137,7 @@ fn function_() {
                                     let _e1859 = local_5;
                                     if (_e1858 < _e1859) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1861 = local_171;
@@ -2149,7 +2149,7 @@ fn function_() {
                                     let _e1867 = local_5;
                                     if (_e1866 < _e1867) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1869 = local_173;
@@ -2161,7 +2161,7 @@ fn function_() {
                                     let _e1875 = local_5;
                                     if (_e1874 < _e1875) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1877 = local_175;
@@ -2173,7 +2173,7 @@ fn function_() {
                                     let _e1883 = local_5;
                                     if (_e1882 < _e1883) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1885 = local_177;
@@ -2189,27 +2189,27 @@ fn function_() {
                                     let _e1899 = (_e1897 >> bitcast<u32>(24i));
                                     local_182 = _e1899;
                                     if (_e1899 == 0u) {
-                                        phi_1382_ = array<f32, 3>(0f, 0f, 0f);
+                                        phi_1392_ = array<f32, 3>(0f, 0f, 0f);
                                     } else {
                                         let _e1901 = local_182;
                                         let _e1907 = bitcast<f32>((bitcast<u32>((bitcast<i32>(_e1901) + -13i)) << bitcast<u32>(23i)));
                                         let _e1908 = local_179;
                                         let _e1911 = local_180;
                                         let _e1914 = local_181;
-                                        phi_1382_ = array<f32, 3>((f32(_e1908) * _e1907), (f32(_e1911) * _e1907), (f32(_e1914) * _e1907));
+                                        phi_1392_ = array<f32, 3>((f32(_e1908) * _e1907), (f32(_e1911) * _e1907), (f32(_e1914) * _e1907));
                                     }
-                                    let _e1919 = phi_1382_;
+                                    let _e1919 = phi_1392_;
                                     local_183 = _e1919;
                                     let _e1920 = local_174;
                                     let _e1923 = ((_e1920 >> bitcast<u32>(14u)) & 1023u);
                                     local_184 = _e1923;
                                     if (_e1923 >= 1023u) {
-                                        phi_1393_ = 1f;
+                                        phi_1403_ = 1f;
                                     } else {
                                         let _e1925 = local_184;
-                                        phi_1393_ = (f32(_e1925) * 0.0009775171f);
+                                        phi_1403_ = (f32(_e1925) * 0.0009775171f);
                                     }
-                                    let _e1929 = phi_1393_;
+                                    let _e1929 = phi_1403_;
                                     local_185 = _e1929;
                                     let _e1930 = local_176;
                                     let _e1931 = bitcast<f32>(_e1930);
@@ -2226,34 +2226,34 @@ fn function_() {
                                     let _e1947 = ((_e1944 >> bitcast<u32>(8u)) & 7u);
                                     local_189 = _e1947;
                                     if (_e1947 == 0u) {
-                                        phi_1465_ = type_22(_e1941, _e1942, _e1929, _e1931, _e1935, 0u);
+                                        phi_1475_ = type_22(_e1941, _e1942, _e1929, _e1931, _e1935, 0u);
                                     } else {
                                         let _e1949 = local_189;
                                         let _e1950 = local_189;
                                         let _e1951 = (_e1949 * _e1950);
                                         local_190 = _e1951;
                                         if (_e1951 <= 1u) {
-                                            phi_1418_ = 1u;
+                                            phi_1428_ = 1u;
                                         } else {
                                             let _e1953 = local_190;
-                                            phi_1418_ = select(16u, 4u, (_e1953 <= 4u));
+                                            phi_1428_ = select(16u, 4u, (_e1953 <= 4u));
                                         }
-                                        let _e1957 = phi_1418_;
+                                        let _e1957 = phi_1428_;
                                         local_191 = _e1957;
                                         if (_e1957 == 0u) {
-                                            phi_2873_ = true;
+                                            phi_2933_ = true;
                                             break;
                                         }
                                         let _e1959 = local_191;
                                         local_192 = (32u / _e1959);
                                         let _e1961 = local_191;
                                         if (_e1961 >= 32u) {
-                                            phi_1431_ = 4294967295u;
+                                            phi_1441_ = 4294967295u;
                                         } else {
                                             let _e1963 = local_191;
-                                            phi_1431_ = ((1u << bitcast<u32>((_e1963 & 31u))) - 1u);
+                                            phi_1441_ = ((1u << bitcast<u32>((_e1963 & 31u))) - 1u);
                                         }
-                                        let _e1969 = phi_1431_;
+                                        let _e1969 = phi_1441_;
                                         local_193 = _e1969;
                                         let _e1970 = local_15;
                                         let _e1972 = local_18;
@@ -2265,7 +2265,7 @@ fn function_() {
                                         let _e1982 = (_e1981 == 0u);
                                         local_195 = _e1982;
                                         if _e1982 {
-                                            phi_2873_ = true;
+                                            phi_2933_ = true;
                                             break;
                                         }
                                         let _e1983 = local_170;
@@ -2274,7 +2274,7 @@ fn function_() {
                                         local_196 = (_e1986 + (_e1983 / _e1984));
                                         let _e1988 = local_195;
                                         if _e1988 {
-                                            phi_2873_ = true;
+                                            phi_2933_ = true;
                                             break;
                                         }
                                         let _e1989 = local_170;
@@ -2285,7 +2285,7 @@ fn function_() {
                                         let _e1995 = local_5;
                                         if (_e1994 < _e1995) {
                                         } else {
-                                            phi_2873_ = true;
+                                            phi_2933_ = true;
                                             break;
                                         }
                                         let _e1997 = local_196;
@@ -2297,17 +2297,17 @@ fn function_() {
                                         let _e2009 = local_185;
                                         let _e2010 = local_186;
                                         let _e2011 = local_187;
-                                        phi_1465_ = type_22(_e2007, _e2008, _e2009, _e2010, _e2011, ((_e2000 >> bitcast<u32>((_e2001 & 31u))) & _e2005));
+                                        phi_1475_ = type_22(_e2007, _e2008, _e2009, _e2010, _e2011, ((_e2000 >> bitcast<u32>((_e2001 & 31u))) & _e2005));
                                     }
-                                    let _e2014 = phi_1465_;
+                                    let _e2014 = phi_1475_;
                                     local_198 = _e2014;
                                     if (_e2014.member_5 != 0u) {
-                                        phi_1476_ = 1.4142135f;
+                                        phi_1486_ = 1.4142135f;
                                     } else {
                                         let _e2017 = local_198;
-                                        phi_1476_ = (0.5f * f32((1u << bitcast<u32>((_e2017.member_4 & 31u)))));
+                                        phi_1486_ = (0.5f * f32((1u << bitcast<u32>((_e2017.member_4 & 31u)))));
                                     }
-                                    let _e2025 = phi_1476_;
+                                    let _e2025 = phi_1486_;
                                     local_199 = _e2025;
                                     let _e2026 = local_198;
                                     local_200 = _e2026.member_3;
@@ -2318,16 +2318,16 @@ fn function_() {
                                         let _e2074 = local_15;
                                         let _e2078 = local_15;
                                         let _e2083 = local_15;
-                                        phi_1531_ = (0.5f * ((((2f * _e2070.member_15.member_1) * _e2074.member_15.member) / (_e2078.member_15.member_2 - _e2074.member_15.member)) * _e2083.member_15.member_3));
+                                        phi_1541_ = (0.5f * ((((2f * _e2070.member_15.member_1) * _e2074.member_15.member) / (_e2078.member_15.member_2 - _e2074.member_15.member)) * _e2083.member_15.member_3));
                                     } else {
                                         let _e2030 = local_201;
                                         if (_e2030 == 0u) {
-                                            phi_1500_ = false;
+                                            phi_1510_ = false;
                                         } else {
                                             let _e2032 = local_201;
-                                            phi_1500_ = (_e2032 <= 2139095040u);
+                                            phi_1510_ = (_e2032 <= 2139095040u);
                                         }
-                                        let _e2035 = phi_1500_;
+                                        let _e2035 = phi_1510_;
                                         if _e2035 {
                                             let _e2036 = local_15;
                                             let _e2040 = local_15;
@@ -2337,30 +2337,30 @@ fn function_() {
                                             let _e2052 = ((((2f * _e2036.member_15.member_1) * _e2040.member_15.member) / (_e2044.member_15.member_2 - _e2040.member_15.member)) * _e2049.member_15.member_3);
                                             local_203 = _e2052;
                                             if (_e2052 == 0f) {
-                                                phi_1522_ = 0f;
+                                                phi_1532_ = 0f;
                                             } else {
                                                 let _e2054 = local_202;
                                                 let _e2055 = local_200;
                                                 let _e2058 = local_203;
-                                                phi_1522_ = (_e2058 * (1f - (_e2054 / _e2055)));
+                                                phi_1532_ = (_e2058 * (1f - (_e2054 / _e2055)));
                                             }
-                                            let _e2061 = phi_1522_;
-                                            phi_1523_ = _e2061;
+                                            let _e2061 = phi_1532_;
+                                            phi_1533_ = _e2061;
                                         } else {
-                                            phi_1523_ = bitcast<f32>(_e402);
+                                            phi_1533_ = bitcast<f32>(_e402);
                                         }
-                                        let _e2063 = phi_1523_;
+                                        let _e2063 = phi_1533_;
                                         local_204 = _e2063;
                                         if (_e2063 < 0f) {
                                             let _e2065 = local_204;
-                                            phi_1529_ = -(_e2065);
+                                            phi_1539_ = -(_e2065);
                                         } else {
-                                            phi_1529_ = _e2063;
+                                            phi_1539_ = _e2063;
                                         }
-                                        let _e2068 = phi_1529_;
-                                        phi_1531_ = (0.5f * _e2068);
+                                        let _e2068 = phi_1539_;
+                                        phi_1541_ = (0.5f * _e2068);
                                     }
-                                    let _e2089 = phi_1531_;
+                                    let _e2089 = phi_1541_;
                                     let _e2094 = local_199;
                                     let _e2095 = (select(_e2089, 0f, ((bitcast<u32>(_e2089) & 2147483647u) > 2139095040u)) + _e2094);
                                     let _e2096 = local_17;
@@ -2401,9 +2401,9 @@ fn function_() {
                                         let _e2171 = local_96;
                                         let _e2173 = local_101;
                                         local_205 = ((_e2159.member_4 + _e2161) | (_e2163.member_5 + _e2165));
-                                        phi_1632_ = 0u;
+                                        phi_1642_ = 0u;
                                         loop {
-                                            let _e2177 = phi_1632_;
+                                            let _e2177 = phi_1642_;
                                             local_206 = _e2177;
                                             let _e2178 = local_206;
                                             if (_e2178 < 1u) {
@@ -2412,28 +2412,28 @@ fn function_() {
                                                 let _e2183 = local_168;
                                                 let _e2188 = local_335;
                                                 let _e2189 = (_e2188 >= f32((2u * (_e2183 << bitcast<u32>((_e2181 & 31u))))));
-                                                phi_1633_ = select(u32(), _e2181, _e2189);
-                                                phi_1653_ = _e2189;
+                                                phi_1643_ = select(u32(), _e2181, _e2189);
+                                                phi_1663_ = _e2189;
                                             } else {
-                                                phi_1633_ = u32();
-                                                phi_1653_ = false;
+                                                phi_1643_ = u32();
+                                                phi_1663_ = false;
                                             }
-                                            let _e2192 = phi_1633_;
-                                            let _e2194 = phi_1653_;
+                                            let _e2192 = phi_1643_;
+                                            let _e2194 = phi_1663_;
                                             local_207 = _e2194;
                                             continue;
                                             continuing {
                                                 let _e2195 = local_207;
-                                                phi_1632_ = _e2192;
+                                                phi_1642_ = _e2192;
                                                 break if !(_e2195);
                                             }
                                         }
                                         let _e2197 = local_206;
                                         let _e2202 = local_205;
                                         let _e2206 = local_100;
-                                        phi_1667_ = 0u;
+                                        phi_1677_ = 0u;
                                         loop {
-                                            let _e2209 = phi_1667_;
+                                            let _e2209 = phi_1677_;
                                             local_208 = _e2209;
                                             let _e2210 = local_208;
                                             if (_e2210 < 2u) {
@@ -2442,28 +2442,28 @@ fn function_() {
                                                 let _e2215 = local_168;
                                                 let _e2220 = local_335;
                                                 let _e2221 = (_e2220 >= f32((2u * (_e2215 << bitcast<u32>((_e2213 & 31u))))));
-                                                phi_1668_ = select(u32(), _e2213, _e2221);
-                                                phi_1688_ = _e2221;
+                                                phi_1678_ = select(u32(), _e2213, _e2221);
+                                                phi_1698_ = _e2221;
                                             } else {
-                                                phi_1668_ = u32();
-                                                phi_1688_ = false;
+                                                phi_1678_ = u32();
+                                                phi_1698_ = false;
                                             }
-                                            let _e2224 = phi_1668_;
-                                            let _e2226 = phi_1688_;
+                                            let _e2224 = phi_1678_;
+                                            let _e2226 = phi_1698_;
                                             local_209 = _e2226;
                                             continue;
                                             continuing {
                                                 let _e2227 = local_209;
-                                                phi_1667_ = _e2224;
+                                                phi_1677_ = _e2224;
                                                 break if !(_e2227);
                                             }
                                         }
                                         let _e2229 = local_208;
                                         let _e2234 = local_205;
                                         let _e2238 = local_99;
-                                        phi_1702_ = 0u;
+                                        phi_1712_ = 0u;
                                         loop {
-                                            let _e2241 = phi_1702_;
+                                            let _e2241 = phi_1712_;
                                             local_210 = _e2241;
                                             let _e2242 = local_210;
                                             if (_e2242 < 3u) {
@@ -2472,28 +2472,28 @@ fn function_() {
                                                 let _e2247 = local_168;
                                                 let _e2252 = local_335;
                                                 let _e2253 = (_e2252 >= f32((2u * (_e2247 << bitcast<u32>((_e2245 & 31u))))));
-                                                phi_1703_ = select(u32(), _e2245, _e2253);
-                                                phi_1723_ = _e2253;
+                                                phi_1713_ = select(u32(), _e2245, _e2253);
+                                                phi_1733_ = _e2253;
                                             } else {
-                                                phi_1703_ = u32();
-                                                phi_1723_ = false;
+                                                phi_1713_ = u32();
+                                                phi_1733_ = false;
                                             }
-                                            let _e2256 = phi_1703_;
-                                            let _e2258 = phi_1723_;
+                                            let _e2256 = phi_1713_;
+                                            let _e2258 = phi_1733_;
                                             local_211 = _e2258;
                                             continue;
                                             continuing {
                                                 let _e2259 = local_211;
-                                                phi_1702_ = _e2256;
+                                                phi_1712_ = _e2256;
                                                 break if !(_e2259);
                                             }
                                         }
                                         let _e2261 = local_210;
                                         let _e2266 = local_205;
                                         let _e2270 = local_98;
-                                        phi_1737_ = 0u;
+                                        phi_1747_ = 0u;
                                         loop {
-                                            let _e2273 = phi_1737_;
+                                            let _e2273 = phi_1747_;
                                             local_212 = _e2273;
                                             let _e2274 = local_212;
                                             if (_e2274 < 4u) {
@@ -2502,58 +2502,58 @@ fn function_() {
                                                 let _e2279 = local_168;
                                                 let _e2284 = local_335;
                                                 let _e2285 = (_e2284 >= f32((2u * (_e2279 << bitcast<u32>((_e2277 & 31u))))));
-                                                phi_1738_ = select(u32(), _e2277, _e2285);
-                                                phi_1758_ = _e2285;
+                                                phi_1748_ = select(u32(), _e2277, _e2285);
+                                                phi_1768_ = _e2285;
                                             } else {
-                                                phi_1738_ = u32();
-                                                phi_1758_ = false;
+                                                phi_1748_ = u32();
+                                                phi_1768_ = false;
                                             }
-                                            let _e2288 = phi_1738_;
-                                            let _e2290 = phi_1758_;
+                                            let _e2288 = phi_1748_;
+                                            let _e2290 = phi_1768_;
                                             local_213 = _e2290;
                                             continue;
                                             continuing {
                                                 let _e2291 = local_213;
-                                                phi_1737_ = _e2288;
+                                                phi_1747_ = _e2288;
                                                 break if !(_e2291);
                                             }
                                         }
                                         let _e2293 = local_212;
                                         let _e2298 = local_205;
                                         let _e2302 = local_97;
-                                        phi_1770_ = (_e2171 | (1u << bitcast<u32>((_e2167 & 31u))));
-                                        phi_1771_ = (_e2302 + select(0u, 1u, ((_e2298 & ((1u << bitcast<u32>((_e2293 & 31u))) - 1u)) == 0u)));
-                                        phi_1772_ = (_e2270 + select(0u, 1u, ((_e2266 & ((1u << bitcast<u32>((_e2261 & 31u))) - 1u)) == 0u)));
-                                        phi_1773_ = (_e2238 + select(0u, 1u, ((_e2234 & ((1u << bitcast<u32>((_e2229 & 31u))) - 1u)) == 0u)));
-                                        phi_1774_ = (_e2206 + select(0u, 1u, ((_e2202 & ((1u << bitcast<u32>((_e2197 & 31u))) - 1u)) == 0u)));
-                                        phi_1775_ = (_e2173 + 1u);
+                                        phi_1780_ = (_e2171 | (1u << bitcast<u32>((_e2167 & 31u))));
+                                        phi_1781_ = (_e2302 + select(0u, 1u, ((_e2298 & ((1u << bitcast<u32>((_e2293 & 31u))) - 1u)) == 0u)));
+                                        phi_1782_ = (_e2270 + select(0u, 1u, ((_e2266 & ((1u << bitcast<u32>((_e2261 & 31u))) - 1u)) == 0u)));
+                                        phi_1783_ = (_e2238 + select(0u, 1u, ((_e2234 & ((1u << bitcast<u32>((_e2229 & 31u))) - 1u)) == 0u)));
+                                        phi_1784_ = (_e2206 + select(0u, 1u, ((_e2202 & ((1u << bitcast<u32>((_e2197 & 31u))) - 1u)) == 0u)));
+                                        phi_1785_ = (_e2173 + 1u);
                                     } else {
-                                        phi_1770_ = _e940;
-                                        phi_1771_ = _e942;
-                                        phi_1772_ = _e944;
-                                        phi_1773_ = _e946;
-                                        phi_1774_ = _e948;
-                                        phi_1775_ = _e950;
+                                        phi_1780_ = _e940;
+                                        phi_1781_ = _e942;
+                                        phi_1782_ = _e944;
+                                        phi_1783_ = _e946;
+                                        phi_1784_ = _e948;
+                                        phi_1785_ = _e950;
                                     }
-                                    let _e2305 = phi_1770_;
-                                    let _e2307 = phi_1771_;
-                                    let _e2309 = phi_1772_;
-                                    let _e2311 = phi_1773_;
-                                    let _e2313 = phi_1774_;
-                                    let _e2315 = phi_1775_;
+                                    let _e2305 = phi_1780_;
+                                    let _e2307 = phi_1781_;
+                                    let _e2309 = phi_1782_;
+                                    let _e2311 = phi_1783_;
+                                    let _e2313 = phi_1784_;
+                                    let _e2315 = phi_1785_;
                                     let _e2316 = local_102;
-                                    phi_1812_ = _e2305;
-                                    phi_1813_ = _e2307;
-                                    phi_1814_ = _e2309;
-                                    phi_1815_ = _e2311;
-                                    phi_1816_ = _e2313;
-                                    phi_1817_ = _e2315;
-                                    phi_1818_ = (_e2316 + 1u);
+                                    phi_1822_ = _e2305;
+                                    phi_1823_ = _e2307;
+                                    phi_1824_ = _e2309;
+                                    phi_1825_ = _e2311;
+                                    phi_1826_ = _e2313;
+                                    phi_1827_ = _e2315;
+                                    phi_1828_ = (_e2316 + 1u);
                                 } else {
                                     let _e1826 = local_146;
                                     local_214 = _e1826.member;
                                     if (_e1826.member == 0u) {
-                                        phi_1792_ = 0u;
+                                        phi_1802_ = 0u;
                                     } else {
                                         let _e1829 = local_76;
                                         let _e1830 = local_214;
@@ -2561,14 +2561,14 @@ fn function_() {
                                         local_215 = _e1832;
                                         if (_e1832 < 1792u) {
                                         } else {
-                                            phi_2873_ = true;
+                                            phi_2933_ = true;
                                             break;
                                         }
                                         let _e1834 = local_215;
                                         let _e1836 = global_15[_e1834];
-                                        phi_1792_ = _e1836;
+                                        phi_1802_ = _e1836;
                                     }
-                                    let _e1838 = phi_1792_;
+                                    let _e1838 = phi_1802_;
                                     local_216 = _e1838;
                                     let _e1839 = local_76;
                                     let _e1840 = local_214;
@@ -2576,7 +2576,7 @@ fn function_() {
                                     local_217 = _e1841;
                                     if (_e1841 < 1792u) {
                                     } else {
-                                        phi_2873_ = true;
+                                        phi_2933_ = true;
                                         break;
                                     }
                                     let _e1843 = local_217;
@@ -2586,108 +2586,108 @@ fn function_() {
                                     if (_e1848 < (_e1845 - _e1846)) {
                                         let _e1850 = local_216;
                                         let _e1851 = local_147;
-                                        phi_1810_ = (_e1850 + _e1851);
+                                        phi_1820_ = (_e1850 + _e1851);
                                     } else {
-                                        phi_1810_ = _e1845;
+                                        phi_1820_ = _e1845;
                                     }
-                                    let _e1854 = phi_1810_;
+                                    let _e1854 = phi_1820_;
                                     let _e1855 = local_86;
-                                    phi_1812_ = _e940;
-                                    phi_1813_ = _e942;
-                                    phi_1814_ = _e944;
-                                    phi_1815_ = _e946;
-                                    phi_1816_ = _e948;
-                                    phi_1817_ = _e950;
-                                    phi_1818_ = (_e1854 - _e1855);
+                                    phi_1822_ = _e940;
+                                    phi_1823_ = _e942;
+                                    phi_1824_ = _e944;
+                                    phi_1825_ = _e946;
+                                    phi_1826_ = _e948;
+                                    phi_1827_ = _e950;
+                                    phi_1828_ = (_e1854 - _e1855);
                                 }
-                                let _e2319 = phi_1812_;
-                                let _e2321 = phi_1813_;
-                                let _e2323 = phi_1814_;
-                                let _e2325 = phi_1815_;
-                                let _e2327 = phi_1816_;
-                                let _e2329 = phi_1817_;
-                                let _e2331 = phi_1818_;
-                                phi_2875_ = _e1790;
-                                phi_1819_ = _e2319;
-                                phi_1820_ = _e2321;
-                                phi_1821_ = _e2323;
-                                phi_1822_ = _e2325;
-                                phi_1823_ = _e2327;
-                                phi_1824_ = _e2329;
+                                let _e2319 = phi_1822_;
+                                let _e2321 = phi_1823_;
+                                let _e2323 = phi_1824_;
+                                let _e2325 = phi_1825_;
+                                let _e2327 = phi_1826_;
+                                let _e2329 = phi_1827_;
+                                let _e2331 = phi_1828_;
+                                phi_2935_ = _e1790;
+                                phi_1829_ = _e2319;
+                                phi_1830_ = _e2321;
+                                phi_1831_ = _e2323;
+                                phi_1832_ = _e2325;
+                                phi_1833_ = _e2327;
+                                phi_1834_ = _e2329;
                                 let _e3431 = local_341;
-                                phi_1825_ = _e3431;
-                                phi_1826_ = _e2331;
+                                phi_1835_ = _e3431;
+                                phi_1836_ = _e2331;
                             } else {
-                                phi_2875_ = _e938;
-                                phi_1819_ = u32();
-                                phi_1820_ = u32();
-                                phi_1821_ = u32();
-                                phi_1822_ = u32();
-                                phi_1823_ = u32();
-                                phi_1824_ = u32();
-                                phi_1825_ = type_25();
-                                phi_1826_ = u32();
+                                phi_2935_ = _e938;
+                                phi_1829_ = u32();
+                                phi_1830_ = u32();
+                                phi_1831_ = u32();
+                                phi_1832_ = u32();
+                                phi_1833_ = u32();
+                                phi_1834_ = u32();
+                                phi_1835_ = type_25();
+                                phi_1836_ = u32();
                             }
-                            let _e2333 = phi_2875_;
-                            let _e2335 = phi_1819_;
-                            let _e2337 = phi_1820_;
-                            let _e2339 = phi_1821_;
-                            let _e2341 = phi_1822_;
-                            let _e2343 = phi_1823_;
-                            let _e2345 = phi_1824_;
-                            let _e2347 = phi_1825_;
-                            let _e2349 = phi_1826_;
-                            phi_2874_ = _e2333;
-                            phi_675_ = _e2335;
-                            phi_678_ = _e2337;
-                            phi_680_ = _e2339;
-                            phi_682_ = _e2341;
-                            phi_684_ = _e2343;
-                            phi_686_ = _e2345;
-                            phi_688_ = _e2347;
-                            phi_690_ = _e2349;
-                            phi_1827_ = _e962;
+                            let _e2333 = phi_2935_;
+                            let _e2335 = phi_1829_;
+                            let _e2337 = phi_1830_;
+                            let _e2339 = phi_1831_;
+                            let _e2341 = phi_1832_;
+                            let _e2343 = phi_1833_;
+                            let _e2345 = phi_1834_;
+                            let _e2347 = phi_1835_;
+                            let _e2349 = phi_1836_;
+                            phi_2934_ = _e2333;
+                            phi_685_ = _e2335;
+                            phi_688_ = _e2337;
+                            phi_690_ = _e2339;
+                            phi_692_ = _e2341;
+                            phi_694_ = _e2343;
+                            phi_696_ = _e2345;
+                            phi_698_ = _e2347;
+                            phi_700_ = _e2349;
+                            phi_1837_ = _e962;
                         } else {
-                            phi_2874_ = _e938;
-                            phi_675_ = u32();
-                            phi_678_ = u32();
-                            phi_680_ = u32();
-                            phi_682_ = u32();
-                            phi_684_ = u32();
-                            phi_686_ = u32();
-                            phi_688_ = type_25();
+                            phi_2934_ = _e938;
+                            phi_685_ = u32();
+                            phi_688_ = u32();
                             phi_690_ = u32();
-                            phi_1827_ = false;
+                            phi_692_ = u32();
+                            phi_694_ = u32();
+                            phi_696_ = u32();
+                            phi_698_ = type_25();
+                            phi_700_ = u32();
+                            phi_1837_ = false;
                         }
-                        let _e2351 = phi_2874_;
-                        let _e2353 = phi_675_;
-                        let _e2355 = phi_678_;
-                        let _e2357 = phi_680_;
-                        let _e2359 = phi_682_;
-                        let _e2361 = phi_684_;
-                        let _e2363 = phi_686_;
-                        let _e2365 = phi_688_;
-                        let _e2367 = phi_690_;
-                        let _e2369 = phi_1827_;
+                        let _e2351 = phi_2934_;
+                        let _e2353 = phi_685_;
+                        let _e2355 = phi_688_;
+                        let _e2357 = phi_690_;
+                        let _e2359 = phi_692_;
+                        let _e2361 = phi_694_;
+                        let _e2363 = phi_696_;
+                        let _e2365 = phi_698_;
+                        let _e2367 = phi_700_;
+                        let _e2369 = phi_1837_;
                         local_218 = _e2369;
                         continue;
                         continuing {
                             let _e2370 = local_218;
-                            phi_2828_ = _e2351;
-                            phi_674_ = _e2353;
-                            phi_677_ = _e2355;
-                            phi_679_ = _e2357;
-                            phi_681_ = _e2359;
-                            phi_683_ = _e2361;
-                            phi_685_ = _e2363;
-                            phi_687_ = _e2365;
-                            phi_689_ = _e2367;
-                            phi_2873_ = _e2351;
+                            phi_2887_ = _e2351;
+                            phi_684_ = _e2353;
+                            phi_687_ = _e2355;
+                            phi_689_ = _e2357;
+                            phi_691_ = _e2359;
+                            phi_693_ = _e2361;
+                            phi_695_ = _e2363;
+                            phi_697_ = _e2365;
+                            phi_699_ = _e2367;
+                            phi_2933_ = _e2351;
                             break if !(_e2370);
                         }
                     }
-                    let _e2373 = phi_2873_;
-                    phi_2913_ = _e2373;
+                    let _e2373 = phi_2933_;
+                    phi_2973_ = _e2373;
                     if _e2373 {
                         break;
                     }
@@ -2698,65 +2698,65 @@ fn function_() {
                         let _e2378 = local_330;
                         let _e2381 = local_96;
                         let _e2384 = local_88;
-                        phi_1840_ = (_e2384 | (_e2381 << bitcast<u32>(((_e2377 * _e2378) & 31u))));
+                        phi_1850_ = (_e2384 | (_e2381 << bitcast<u32>(((_e2377 * _e2378) & 31u))));
                     } else {
-                        phi_1840_ = _e894;
+                        phi_1850_ = _e894;
                     }
-                    let _e2387 = phi_1840_;
+                    let _e2387 = phi_1850_;
                     let _e2388 = local_330;
                     let _e2390 = local_86;
                     let _e2392 = local_87;
-                    phi_2914_ = _e2373;
+                    phi_2974_ = _e2373;
                     let _e3448 = local_342;
-                    phi_621_ = _e3448;
+                    phi_631_ = _e3448;
                     let _e3451 = local_343;
-                    phi_624_ = _e3451;
+                    phi_634_ = _e3451;
                     let _e3454 = local_344;
-                    phi_626_ = _e3454;
+                    phi_636_ = _e3454;
                     let _e3457 = local_345;
-                    phi_628_ = _e3457;
+                    phi_638_ = _e3457;
                     let _e3460 = local_346;
-                    phi_630_ = _e3460;
-                    phi_632_ = (_e2390 + (256u * _e2388));
-                    phi_634_ = (_e2392 + 1u);
-                    phi_636_ = _e2387;
+                    phi_640_ = _e3460;
+                    phi_642_ = (_e2390 + (256u * _e2388));
+                    phi_644_ = (_e2392 + 1u);
+                    phi_646_ = _e2387;
                 } else {
-                    phi_2914_ = _e878;
-                    phi_621_ = u32();
-                    phi_624_ = u32();
-                    phi_626_ = u32();
-                    phi_628_ = u32();
-                    phi_630_ = u32();
-                    phi_632_ = u32();
+                    phi_2974_ = _e878;
+                    phi_631_ = u32();
                     phi_634_ = u32();
                     phi_636_ = u32();
+                    phi_638_ = u32();
+                    phi_640_ = u32();
+                    phi_642_ = u32();
+                    phi_644_ = u32();
+                    phi_646_ = u32();
                 }
-                let _e2395 = phi_2914_;
-                let _e2397 = phi_621_;
-                let _e2399 = phi_624_;
-                let _e2401 = phi_626_;
-                let _e2403 = phi_628_;
-                let _e2405 = phi_630_;
-                let _e2407 = phi_632_;
-                let _e2409 = phi_634_;
-                let _e2411 = phi_636_;
+                let _e2395 = phi_2974_;
+                let _e2397 = phi_631_;
+                let _e2399 = phi_634_;
+                let _e2401 = phi_636_;
+                let _e2403 = phi_638_;
+                let _e2405 = phi_640_;
+                let _e2407 = phi_642_;
+                let _e2409 = phi_644_;
+                let _e2411 = phi_646_;
                 continue;
                 continuing {
                     let _e2412 = local_89;
-                    phi_2820_ = _e2395;
-                    phi_620_ = _e2397;
-                    phi_623_ = _e2399;
-                    phi_625_ = _e2401;
-                    phi_627_ = _e2403;
-                    phi_629_ = _e2405;
-                    phi_631_ = _e2407;
-                    phi_633_ = _e2409;
-                    phi_635_ = _e2411;
-                    phi_2913_ = _e2395;
+                    phi_2879_ = _e2395;
+                    phi_630_ = _e2397;
+                    phi_633_ = _e2399;
+                    phi_635_ = _e2401;
+                    phi_637_ = _e2403;
+                    phi_639_ = _e2405;
+                    phi_641_ = _e2407;
+                    phi_643_ = _e2409;
+                    phi_645_ = _e2411;
+                    phi_2973_ = _e2395;
                     break if !(_e2412);
                 }
             }
-            let _e2415 = phi_2913_;
+            let _e2415 = phi_2973_;
             if _e2415 {
                 break;
             }
@@ -2844,44 +2844,44 @@ fn function_() {
                     local_229 = _e2465;
                     if _e2465 {
                         let _e2466 = local_1;
-                        phi_1903_ = type_16(1u, _e2466);
+                        phi_1913_ = type_16(1u, _e2466);
                     } else {
-                        phi_1903_ = type_16();
+                        phi_1913_ = type_16();
                     }
-                    let _e2469 = phi_1903_;
+                    let _e2469 = phi_1913_;
                     let _e2470 = local_229;
-                    phi_1905_ = _e2469;
-                    phi_1906_ = select(true, false, _e2470);
+                    phi_1915_ = _e2469;
+                    phi_1916_ = select(true, false, _e2470);
                 } else {
-                    phi_1905_ = type_16();
-                    phi_1906_ = true;
+                    phi_1915_ = type_16();
+                    phi_1916_ = true;
                 }
-                let _e2473 = phi_1905_;
-                let _e2475 = phi_1906_;
-                phi_1907_ = _e2473;
-                phi_1908_ = _e2475;
+                let _e2473 = phi_1915_;
+                let _e2475 = phi_1916_;
+                phi_1917_ = _e2473;
+                phi_1918_ = _e2475;
             } else {
-                phi_1907_ = type_16();
-                phi_1908_ = true;
+                phi_1917_ = type_16();
+                phi_1918_ = true;
             }
-            let _e2477 = phi_1907_;
-            let _e2479 = phi_1908_;
+            let _e2477 = phi_1917_;
+            let _e2479 = phi_1918_;
             if _e2479 {
-                phi_1913_ = type_16(0u, type_16().member_1);
+                phi_1923_ = type_16(0u, type_16().member_1);
             } else {
-                phi_1913_ = _e2477;
+                phi_1923_ = _e2477;
             }
-            let _e2484 = phi_1913_;
+            let _e2484 = phi_1923_;
             local_230 = _e2484.member_1;
             if (bitcast<i32>(_e2484.member) != 0i) {
                 let _e2519 = local_230;
                 let _e2521 = local_230;
                 local_231 = select(firstTrailingBit(_e2519), 32u, (_e2521 == 0u));
-                phi_1925_ = 0u;
-                phi_1928_ = 256u;
+                phi_1935_ = 0u;
+                phi_1938_ = 256u;
                 loop {
-                    let _e2525 = phi_1925_;
-                    let _e2527 = phi_1928_;
+                    let _e2525 = phi_1935_;
+                    let _e2527 = phi_1938_;
                     local_232 = _e2525;
                     local_233 = _e2527;
                     let _e2528 = local_233;
@@ -2904,16 +2904,16 @@ fn function_() {
                             local_237 = _e2542;
                             if (_e2542 < 1792u) {
                             } else {
-                                phi_2924_ = true;
+                                phi_2984_ = true;
                                 break;
                             }
                             let _e2544 = local_237;
                             let _e2546 = global_15[_e2544];
-                            phi_1952_ = _e2546;
+                            phi_1962_ = _e2546;
                         } else {
-                            phi_1952_ = 0u;
+                            phi_1962_ = 0u;
                         }
-                        let _e2548 = phi_1952_;
+                        let _e2548 = phi_1962_;
                         let _e2549 = subgroupAdd(_e2548);
                         local_238 = _e2549;
                         let _e2550 = local_236;
@@ -2927,7 +2927,7 @@ fn function_() {
                                 local_239 = _e2560;
                                 if (_e2560 < 1792u) {
                                 } else {
-                                    phi_2924_ = true;
+                                    phi_2984_ = true;
                                     break;
                                 }
                                 let _e2562 = local_239;
@@ -2941,24 +2941,24 @@ fn function_() {
                         let _e2567 = local_233;
                         let _e2570 = local_232;
                         let _e2571 = local_231;
-                        phi_1926_ = (_e2570 + _e2571);
-                        phi_1929_ = (_e2567 >> bitcast<u32>((_e2565 & 31u)));
+                        phi_1936_ = (_e2570 + _e2571);
+                        phi_1939_ = (_e2567 >> bitcast<u32>((_e2565 & 31u)));
                     } else {
-                        phi_1926_ = u32();
-                        phi_1929_ = u32();
+                        phi_1936_ = u32();
+                        phi_1939_ = u32();
                     }
-                    let _e2574 = phi_1926_;
-                    let _e2576 = phi_1929_;
+                    let _e2574 = phi_1936_;
+                    let _e2576 = phi_1939_;
                     continue;
                     continuing {
                         let _e2577 = local_234;
-                        phi_1925_ = _e2574;
-                        phi_1928_ = _e2576;
-                        phi_2924_ = _e2415;
+                        phi_1935_ = _e2574;
+                        phi_1938_ = _e2576;
+                        phi_2984_ = _e2415;
                         break if !(_e2577);
                     }
                 }
-                let _e2580 = phi_2924_;
+                let _e2580 = phi_2984_;
                 if _e2580 {
                     break;
                 }
@@ -2980,20 +2980,20 @@ fn function_() {
                     }
                     let _e2597 = local_241;
                     let _e2599 = global_15[_e2597];
-                    phi_1995_ = _e2599;
+                    phi_2010_ = _e2599;
                 } else {
-                    phi_1995_ = 0u;
+                    phi_2010_ = 0u;
                 }
-                let _e2601 = phi_1995_;
+                let _e2601 = phi_2010_;
                 let _e2602 = subgroupAdd(_e2601);
                 storageBarrier();
                 workgroupBarrier();
-                phi_2938_ = _e2580;
-                phi_2044_ = _e2602;
+                phi_2995_ = _e2580;
+                phi_2064_ = _e2602;
             } else {
-                phi_2000_ = 128u;
+                phi_2020_ = 128u;
                 loop {
-                    let _e2490 = phi_2000_;
+                    let _e2490 = phi_2020_;
                     local_242 = _e2490;
                     let _e2491 = local_242;
                     let _e2492 = (_e2491 > 0u);
@@ -3005,7 +3005,7 @@ fn function_() {
                             let _e2496 = local_220;
                             if _e2496 {
                             } else {
-                                phi_2916_ = true;
+                                phi_2976_ = true;
                                 break;
                             }
                             let _e2497 = global_15[_e2428];
@@ -3016,7 +3016,7 @@ fn function_() {
                             local_245 = _e2500;
                             if (_e2500 < 1792u) {
                             } else {
-                                phi_2916_ = true;
+                                phi_2976_ = true;
                                 break;
                             }
                             let _e2502 = local_245;
@@ -3026,7 +3026,7 @@ fn function_() {
                             let _e2507 = local_220;
                             if _e2507 {
                             } else {
-                                phi_2916_ = true;
+                                phi_2976_ = true;
                                 break;
                             }
                             let _e2508 = local_246;
@@ -3035,31 +3035,31 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e2509 = local_242;
-                        phi_2001_ = (_e2509 / 2u);
+                        phi_2021_ = (_e2509 / 2u);
                     } else {
-                        phi_2001_ = u32();
+                        phi_2021_ = u32();
                     }
-                    let _e2512 = phi_2001_;
+                    let _e2512 = phi_2021_;
                     continue;
                     continuing {
                         let _e2513 = local_243;
-                        phi_2000_ = _e2512;
-                        phi_2916_ = _e2415;
+                        phi_2020_ = _e2512;
+                        phi_2976_ = _e2415;
                         break if !(_e2513);
                     }
                 }
-                let _e2516 = phi_2916_;
+                let _e2516 = phi_2976_;
                 if _e2516 {
                     break;
                 }
                 let _e2518 = global_15[0u];
                 storageBarrier();
                 workgroupBarrier();
-                phi_2938_ = _e2516;
-                phi_2044_ = _e2518;
+                phi_2995_ = _e2516;
+                phi_2064_ = _e2518;
             }
-            let _e2604 = phi_2938_;
-            let _e2606 = phi_2044_;
+            let _e2604 = phi_2995_;
+            let _e2606 = phi_2064_;
             local_247 = _e2606;
             let _e2607 = local_37;
             if _e2607 {
@@ -3072,44 +3072,44 @@ fn function_() {
                     local_248 = _e2616;
                     if _e2616 {
                         let _e2617 = local_1;
-                        phi_2061_ = type_16(1u, _e2617);
+                        phi_2081_ = type_16(1u, _e2617);
                     } else {
-                        phi_2061_ = type_16();
+                        phi_2081_ = type_16();
                     }
-                    let _e2620 = phi_2061_;
+                    let _e2620 = phi_2081_;
                     let _e2621 = local_248;
-                    phi_2063_ = _e2620;
-                    phi_2064_ = select(true, false, _e2621);
+                    phi_2083_ = _e2620;
+                    phi_2084_ = select(true, false, _e2621);
                 } else {
-                    phi_2063_ = type_16();
-                    phi_2064_ = true;
+                    phi_2083_ = type_16();
+                    phi_2084_ = true;
                 }
-                let _e2624 = phi_2063_;
-                let _e2626 = phi_2064_;
-                phi_2065_ = _e2624;
-                phi_2066_ = _e2626;
+                let _e2624 = phi_2083_;
+                let _e2626 = phi_2084_;
+                phi_2085_ = _e2624;
+                phi_2086_ = _e2626;
             } else {
-                phi_2065_ = type_16();
-                phi_2066_ = true;
+                phi_2085_ = type_16();
+                phi_2086_ = true;
             }
-            let _e2628 = phi_2065_;
-            let _e2630 = phi_2066_;
+            let _e2628 = phi_2085_;
+            let _e2630 = phi_2086_;
             if _e2630 {
-                phi_2071_ = type_16(0u, type_16().member_1);
+                phi_2091_ = type_16(0u, type_16().member_1);
             } else {
-                phi_2071_ = _e2628;
+                phi_2091_ = _e2628;
             }
-            let _e2635 = phi_2071_;
+            let _e2635 = phi_2091_;
             local_249 = _e2635.member_1;
             if (bitcast<i32>(_e2635.member) != 0i) {
                 let _e2670 = local_249;
                 let _e2672 = local_249;
                 local_250 = select(firstTrailingBit(_e2670), 32u, (_e2672 == 0u));
-                phi_2083_ = 0u;
-                phi_2086_ = 256u;
+                phi_2103_ = 0u;
+                phi_2106_ = 256u;
                 loop {
-                    let _e2676 = phi_2083_;
-                    let _e2678 = phi_2086_;
+                    let _e2676 = phi_2103_;
+                    let _e2678 = phi_2106_;
                     local_251 = _e2676;
                     local_252 = _e2678;
                     let _e2679 = local_252;
@@ -3132,16 +3132,16 @@ fn function_() {
                             local_256 = _e2694;
                             if (_e2694 < 1792u) {
                             } else {
-                                phi_2940_ = true;
+                                phi_3000_ = true;
                                 break;
                             }
                             let _e2696 = local_256;
                             let _e2698 = global_15[_e2696];
-                            phi_2110_ = _e2698;
+                            phi_2130_ = _e2698;
                         } else {
-                            phi_2110_ = 0u;
+                            phi_2130_ = 0u;
                         }
-                        let _e2700 = phi_2110_;
+                        let _e2700 = phi_2130_;
                         let _e2701 = subgroupAdd(_e2700);
                         local_257 = _e2701;
                         let _e2702 = local_255;
@@ -3155,7 +3155,7 @@ fn function_() {
                                 local_258 = _e2713;
                                 if (_e2713 < 1792u) {
                                 } else {
-                                    phi_2940_ = true;
+                                    phi_3000_ = true;
                                     break;
                                 }
                                 let _e2715 = local_258;
@@ -3169,24 +3169,24 @@ fn function_() {
                         let _e2720 = local_252;
                         let _e2723 = local_251;
                         let _e2724 = local_250;
-                        phi_2084_ = (_e2723 + _e2724);
-                        phi_2087_ = (_e2720 >> bitcast<u32>((_e2718 & 31u)));
+                        phi_2104_ = (_e2723 + _e2724);
+                        phi_2107_ = (_e2720 >> bitcast<u32>((_e2718 & 31u)));
                     } else {
-                        phi_2084_ = u32();
-                        phi_2087_ = u32();
+                        phi_2104_ = u32();
+                        phi_2107_ = u32();
                     }
-                    let _e2727 = phi_2084_;
-                    let _e2729 = phi_2087_;
+                    let _e2727 = phi_2104_;
+                    let _e2729 = phi_2107_;
                     continue;
                     continuing {
                         let _e2730 = local_253;
-                        phi_2083_ = _e2727;
-                        phi_2086_ = _e2729;
-                        phi_2940_ = _e2604;
+                        phi_2103_ = _e2727;
+                        phi_2106_ = _e2729;
+                        phi_3000_ = _e2604;
                         break if !(_e2730);
                     }
                 }
-                let _e2733 = phi_2940_;
+                let _e2733 = phi_3000_;
                 if _e2733 {
                     break;
                 }
@@ -3208,20 +3208,20 @@ fn function_() {
                     }
                     let _e2751 = local_260;
                     let _e2753 = global_15[_e2751];
-                    phi_2153_ = _e2753;
+                    phi_2178_ = _e2753;
                 } else {
-                    phi_2153_ = 0u;
+                    phi_2178_ = 0u;
                 }
-                let _e2755 = phi_2153_;
+                let _e2755 = phi_2178_;
                 let _e2756 = subgroupAdd(_e2755);
                 storageBarrier();
                 workgroupBarrier();
-                phi_2954_ = _e2733;
-                phi_2202_ = _e2756;
+                phi_3011_ = _e2733;
+                phi_2232_ = _e2756;
             } else {
-                phi_2158_ = 128u;
+                phi_2188_ = 128u;
                 loop {
-                    let _e2641 = phi_2158_;
+                    let _e2641 = phi_2188_;
                     local_261 = _e2641;
                     let _e2642 = local_261;
                     let _e2643 = (_e2642 > 0u);
@@ -3233,7 +3233,7 @@ fn function_() {
                             let _e2647 = local_222;
                             if _e2647 {
                             } else {
-                                phi_2930_ = true;
+                                phi_2990_ = true;
                                 break;
                             }
                             let _e2648 = global_15[_e2434];
@@ -3244,7 +3244,7 @@ fn function_() {
                             local_264 = _e2651;
                             if (_e2651 < 1792u) {
                             } else {
-                                phi_2930_ = true;
+                                phi_2990_ = true;
                                 break;
                             }
                             let _e2653 = local_264;
@@ -3254,7 +3254,7 @@ fn function_() {
                             let _e2658 = local_222;
                             if _e2658 {
                             } else {
-                                phi_2930_ = true;
+                                phi_2990_ = true;
                                 break;
                             }
                             let _e2659 = local_265;
@@ -3263,31 +3263,31 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e2660 = local_261;
-                        phi_2159_ = (_e2660 / 2u);
+                        phi_2189_ = (_e2660 / 2u);
                     } else {
-                        phi_2159_ = u32();
+                        phi_2189_ = u32();
                     }
-                    let _e2663 = phi_2159_;
+                    let _e2663 = phi_2189_;
                     continue;
                     continuing {
                         let _e2664 = local_262;
-                        phi_2158_ = _e2663;
-                        phi_2930_ = _e2604;
+                        phi_2188_ = _e2663;
+                        phi_2990_ = _e2604;
                         break if !(_e2664);
                     }
                 }
-                let _e2667 = phi_2930_;
+                let _e2667 = phi_2990_;
                 if _e2667 {
                     break;
                 }
                 let _e2669 = global_15[256u];
                 storageBarrier();
                 workgroupBarrier();
-                phi_2954_ = _e2667;
-                phi_2202_ = _e2669;
+                phi_3011_ = _e2667;
+                phi_2232_ = _e2669;
             }
-            let _e2758 = phi_2954_;
-            let _e2760 = phi_2202_;
+            let _e2758 = phi_3011_;
+            let _e2760 = phi_2232_;
             local_266 = _e2760;
             let _e2761 = local_37;
             if _e2761 {
@@ -3300,44 +3300,44 @@ fn function_() {
                     local_267 = _e2770;
                     if _e2770 {
                         let _e2771 = local_1;
-                        phi_2219_ = type_16(1u, _e2771);
+                        phi_2249_ = type_16(1u, _e2771);
                     } else {
-                        phi_2219_ = type_16();
+                        phi_2249_ = type_16();
                     }
-                    let _e2774 = phi_2219_;
+                    let _e2774 = phi_2249_;
                     let _e2775 = local_267;
-                    phi_2221_ = _e2774;
-                    phi_2222_ = select(true, false, _e2775);
+                    phi_2251_ = _e2774;
+                    phi_2252_ = select(true, false, _e2775);
                 } else {
-                    phi_2221_ = type_16();
-                    phi_2222_ = true;
+                    phi_2251_ = type_16();
+                    phi_2252_ = true;
                 }
-                let _e2778 = phi_2221_;
-                let _e2780 = phi_2222_;
-                phi_2223_ = _e2778;
-                phi_2224_ = _e2780;
+                let _e2778 = phi_2251_;
+                let _e2780 = phi_2252_;
+                phi_2253_ = _e2778;
+                phi_2254_ = _e2780;
             } else {
-                phi_2223_ = type_16();
-                phi_2224_ = true;
+                phi_2253_ = type_16();
+                phi_2254_ = true;
             }
-            let _e2782 = phi_2223_;
-            let _e2784 = phi_2224_;
+            let _e2782 = phi_2253_;
+            let _e2784 = phi_2254_;
             if _e2784 {
-                phi_2229_ = type_16(0u, type_16().member_1);
+                phi_2259_ = type_16(0u, type_16().member_1);
             } else {
-                phi_2229_ = _e2782;
+                phi_2259_ = _e2782;
             }
-            let _e2789 = phi_2229_;
+            let _e2789 = phi_2259_;
             local_268 = _e2789.member_1;
             if (bitcast<i32>(_e2789.member) != 0i) {
                 let _e2824 = local_268;
                 let _e2826 = local_268;
                 local_269 = select(firstTrailingBit(_e2824), 32u, (_e2826 == 0u));
-                phi_2241_ = 0u;
-                phi_2244_ = 256u;
+                phi_2271_ = 0u;
+                phi_2274_ = 256u;
                 loop {
-                    let _e2830 = phi_2241_;
-                    let _e2832 = phi_2244_;
+                    let _e2830 = phi_2271_;
+                    let _e2832 = phi_2274_;
                     local_270 = _e2830;
                     local_271 = _e2832;
                     let _e2833 = local_271;
@@ -3360,16 +3360,16 @@ fn function_() {
                             local_275 = _e2848;
                             if (_e2848 < 1792u) {
                             } else {
-                                phi_2956_ = true;
+                                phi_3016_ = true;
                                 break;
                             }
                             let _e2850 = local_275;
                             let _e2852 = global_15[_e2850];
-                            phi_2268_ = _e2852;
+                            phi_2298_ = _e2852;
                         } else {
-                            phi_2268_ = 0u;
+                            phi_2298_ = 0u;
                         }
-                        let _e2854 = phi_2268_;
+                        let _e2854 = phi_2298_;
                         let _e2855 = subgroupAdd(_e2854);
                         local_276 = _e2855;
                         let _e2856 = local_274;
@@ -3383,7 +3383,7 @@ fn function_() {
                                 local_277 = _e2867;
                                 if (_e2867 < 1792u) {
                                 } else {
-                                    phi_2956_ = true;
+                                    phi_3016_ = true;
                                     break;
                                 }
                                 let _e2869 = local_277;
@@ -3397,24 +3397,24 @@ fn function_() {
                         let _e2874 = local_271;
                         let _e2877 = local_270;
                         let _e2878 = local_269;
-                        phi_2242_ = (_e2877 + _e2878);
-                        phi_2245_ = (_e2874 >> bitcast<u32>((_e2872 & 31u)));
+                        phi_2272_ = (_e2877 + _e2878);
+                        phi_2275_ = (_e2874 >> bitcast<u32>((_e2872 & 31u)));
                     } else {
-                        phi_2242_ = u32();
-                        phi_2245_ = u32();
+                        phi_2272_ = u32();
+                        phi_2275_ = u32();
                     }
-                    let _e2881 = phi_2242_;
-                    let _e2883 = phi_2245_;
+                    let _e2881 = phi_2272_;
+                    let _e2883 = phi_2275_;
                     continue;
                     continuing {
                         let _e2884 = local_272;
-                        phi_2241_ = _e2881;
-                        phi_2244_ = _e2883;
-                        phi_2956_ = _e2758;
+                        phi_2271_ = _e2881;
+                        phi_2274_ = _e2883;
+                        phi_3016_ = _e2758;
                         break if !(_e2884);
                     }
                 }
-                let _e2887 = phi_2956_;
+                let _e2887 = phi_3016_;
                 if _e2887 {
                     break;
                 }
@@ -3436,20 +3436,20 @@ fn function_() {
                     }
                     let _e2905 = local_279;
                     let _e2907 = global_15[_e2905];
-                    phi_2311_ = _e2907;
+                    phi_2346_ = _e2907;
                 } else {
-                    phi_2311_ = 0u;
+                    phi_2346_ = 0u;
                 }
-                let _e2909 = phi_2311_;
+                let _e2909 = phi_2346_;
                 let _e2910 = subgroupAdd(_e2909);
                 storageBarrier();
                 workgroupBarrier();
-                phi_2970_ = _e2887;
-                phi_2360_ = _e2910;
+                phi_3027_ = _e2887;
+                phi_2400_ = _e2910;
             } else {
-                phi_2316_ = 128u;
+                phi_2356_ = 128u;
                 loop {
-                    let _e2795 = phi_2316_;
+                    let _e2795 = phi_2356_;
                     local_280 = _e2795;
                     let _e2796 = local_280;
                     let _e2797 = (_e2796 > 0u);
@@ -3461,7 +3461,7 @@ fn function_() {
                             let _e2801 = local_224;
                             if _e2801 {
                             } else {
-                                phi_2946_ = true;
+                                phi_3006_ = true;
                                 break;
                             }
                             let _e2802 = global_15[_e2440];
@@ -3472,7 +3472,7 @@ fn function_() {
                             local_283 = _e2805;
                             if (_e2805 < 1792u) {
                             } else {
-                                phi_2946_ = true;
+                                phi_3006_ = true;
                                 break;
                             }
                             let _e2807 = local_283;
@@ -3482,7 +3482,7 @@ fn function_() {
                             let _e2812 = local_224;
                             if _e2812 {
                             } else {
-                                phi_2946_ = true;
+                                phi_3006_ = true;
                                 break;
                             }
                             let _e2813 = local_284;
@@ -3491,31 +3491,31 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e2814 = local_280;
-                        phi_2317_ = (_e2814 / 2u);
+                        phi_2357_ = (_e2814 / 2u);
                     } else {
-                        phi_2317_ = u32();
+                        phi_2357_ = u32();
                     }
-                    let _e2817 = phi_2317_;
+                    let _e2817 = phi_2357_;
                     continue;
                     continuing {
                         let _e2818 = local_281;
-                        phi_2316_ = _e2817;
-                        phi_2946_ = _e2758;
+                        phi_2356_ = _e2817;
+                        phi_3006_ = _e2758;
                         break if !(_e2818);
                     }
                 }
-                let _e2821 = phi_2946_;
+                let _e2821 = phi_3006_;
                 if _e2821 {
                     break;
                 }
                 let _e2823 = global_15[512u];
                 storageBarrier();
                 workgroupBarrier();
-                phi_2970_ = _e2821;
-                phi_2360_ = _e2823;
+                phi_3027_ = _e2821;
+                phi_2400_ = _e2823;
             }
-            let _e2912 = phi_2970_;
-            let _e2914 = phi_2360_;
+            let _e2912 = phi_3027_;
+            let _e2914 = phi_2400_;
             local_285 = _e2914;
             let _e2915 = local_37;
             if _e2915 {
@@ -3528,44 +3528,44 @@ fn function_() {
                     local_286 = _e2924;
                     if _e2924 {
                         let _e2925 = local_1;
-                        phi_2377_ = type_16(1u, _e2925);
+                        phi_2417_ = type_16(1u, _e2925);
                     } else {
-                        phi_2377_ = type_16();
+                        phi_2417_ = type_16();
                     }
-                    let _e2928 = phi_2377_;
+                    let _e2928 = phi_2417_;
                     let _e2929 = local_286;
-                    phi_2379_ = _e2928;
-                    phi_2380_ = select(true, false, _e2929);
+                    phi_2419_ = _e2928;
+                    phi_2420_ = select(true, false, _e2929);
                 } else {
-                    phi_2379_ = type_16();
-                    phi_2380_ = true;
+                    phi_2419_ = type_16();
+                    phi_2420_ = true;
                 }
-                let _e2932 = phi_2379_;
-                let _e2934 = phi_2380_;
-                phi_2381_ = _e2932;
-                phi_2382_ = _e2934;
+                let _e2932 = phi_2419_;
+                let _e2934 = phi_2420_;
+                phi_2421_ = _e2932;
+                phi_2422_ = _e2934;
             } else {
-                phi_2381_ = type_16();
-                phi_2382_ = true;
+                phi_2421_ = type_16();
+                phi_2422_ = true;
             }
-            let _e2936 = phi_2381_;
-            let _e2938 = phi_2382_;
+            let _e2936 = phi_2421_;
+            let _e2938 = phi_2422_;
             if _e2938 {
-                phi_2387_ = type_16(0u, type_16().member_1);
+                phi_2427_ = type_16(0u, type_16().member_1);
             } else {
-                phi_2387_ = _e2936;
+                phi_2427_ = _e2936;
             }
-            let _e2943 = phi_2387_;
+            let _e2943 = phi_2427_;
             local_287 = _e2943.member_1;
             if (bitcast<i32>(_e2943.member) != 0i) {
                 let _e2981 = local_287;
                 let _e2983 = local_287;
                 local_288 = select(firstTrailingBit(_e2981), 32u, (_e2983 == 0u));
-                phi_2399_ = 0u;
-                phi_2402_ = 256u;
+                phi_2439_ = 0u;
+                phi_2442_ = 256u;
                 loop {
-                    let _e2987 = phi_2399_;
-                    let _e2989 = phi_2402_;
+                    let _e2987 = phi_2439_;
+                    let _e2989 = phi_2442_;
                     local_289 = _e2987;
                     local_290 = _e2989;
                     let _e2990 = local_290;
@@ -3589,16 +3589,16 @@ fn function_() {
                             local_294 = _e3006;
                             if (_e3006 < 1792u) {
                             } else {
-                                phi_2972_ = true;
+                                phi_3032_ = true;
                                 break;
                             }
                             let _e3008 = local_294;
                             let _e3010 = global_15[_e3008];
-                            phi_2426_ = _e3010;
+                            phi_2466_ = _e3010;
                         } else {
-                            phi_2426_ = 0u;
+                            phi_2466_ = 0u;
                         }
-                        let _e3012 = phi_2426_;
+                        let _e3012 = phi_2466_;
                         let _e3013 = subgroupAdd(_e3012);
                         local_295 = _e3013;
                         let _e3014 = local_293;
@@ -3613,7 +3613,7 @@ fn function_() {
                                 local_296 = _e3026;
                                 if (_e3026 < 1792u) {
                                 } else {
-                                    phi_2972_ = true;
+                                    phi_3032_ = true;
                                     break;
                                 }
                                 let _e3028 = local_296;
@@ -3627,24 +3627,24 @@ fn function_() {
                         let _e3033 = local_290;
                         let _e3036 = local_289;
                         let _e3037 = local_288;
-                        phi_2400_ = (_e3036 + _e3037);
-                        phi_2403_ = (_e3033 >> bitcast<u32>((_e3031 & 31u)));
+                        phi_2440_ = (_e3036 + _e3037);
+                        phi_2443_ = (_e3033 >> bitcast<u32>((_e3031 & 31u)));
                     } else {
-                        phi_2400_ = u32();
-                        phi_2403_ = u32();
+                        phi_2440_ = u32();
+                        phi_2443_ = u32();
                     }
-                    let _e3040 = phi_2400_;
-                    let _e3042 = phi_2403_;
+                    let _e3040 = phi_2440_;
+                    let _e3042 = phi_2443_;
                     continue;
                     continuing {
                         let _e3043 = local_291;
-                        phi_2399_ = _e3040;
-                        phi_2402_ = _e3042;
-                        phi_2972_ = _e2912;
+                        phi_2439_ = _e3040;
+                        phi_2442_ = _e3042;
+                        phi_3032_ = _e2912;
                         break if !(_e3043);
                     }
                 }
-                let _e3046 = phi_2972_;
+                let _e3046 = phi_3032_;
                 if _e3046 {
                     break;
                 }
@@ -3667,20 +3667,20 @@ fn function_() {
                     }
                     let _e3065 = local_298;
                     let _e3067 = global_15[_e3065];
-                    phi_2469_ = _e3067;
+                    phi_2514_ = _e3067;
                 } else {
-                    phi_2469_ = 0u;
+                    phi_2514_ = 0u;
                 }
-                let _e3069 = phi_2469_;
+                let _e3069 = phi_2514_;
                 let _e3070 = subgroupAdd(_e3069);
                 storageBarrier();
                 workgroupBarrier();
-                phi_2986_ = _e3046;
-                phi_2518_ = _e3070;
+                phi_3043_ = _e3046;
+                phi_2568_ = _e3070;
             } else {
-                phi_2474_ = 128u;
+                phi_2524_ = 128u;
                 loop {
-                    let _e2949 = phi_2474_;
+                    let _e2949 = phi_2524_;
                     local_299 = _e2949;
                     let _e2950 = local_299;
                     let _e2951 = (_e2950 > 0u);
@@ -3692,7 +3692,7 @@ fn function_() {
                             let _e2955 = local_226;
                             if _e2955 {
                             } else {
-                                phi_2962_ = true;
+                                phi_3022_ = true;
                                 break;
                             }
                             let _e2956 = global_15[_e2447];
@@ -3703,7 +3703,7 @@ fn function_() {
                             local_302 = _e2959;
                             if (_e2959 < 1792u) {
                             } else {
-                                phi_2962_ = true;
+                                phi_3022_ = true;
                                 break;
                             }
                             let _e2961 = local_302;
@@ -3713,7 +3713,7 @@ fn function_() {
                             let _e2966 = local_226;
                             if _e2966 {
                             } else {
-                                phi_2962_ = true;
+                                phi_3022_ = true;
                                 break;
                             }
                             let _e2967 = local_303;
@@ -3722,20 +3722,20 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e2968 = local_299;
-                        phi_2475_ = (_e2968 / 2u);
+                        phi_2525_ = (_e2968 / 2u);
                     } else {
-                        phi_2475_ = u32();
+                        phi_2525_ = u32();
                     }
-                    let _e2971 = phi_2475_;
+                    let _e2971 = phi_2525_;
                     continue;
                     continuing {
                         let _e2972 = local_300;
-                        phi_2474_ = _e2971;
-                        phi_2962_ = _e2912;
+                        phi_2524_ = _e2971;
+                        phi_3022_ = _e2912;
                         break if !(_e2972);
                     }
                 }
-                let _e2975 = phi_2962_;
+                let _e2975 = phi_3022_;
                 if _e2975 {
                     break;
                 }
@@ -3748,11 +3748,11 @@ fn function_() {
                 let _e2980 = global_15[_e2978];
                 storageBarrier();
                 workgroupBarrier();
-                phi_2986_ = _e2975;
-                phi_2518_ = _e2980;
+                phi_3043_ = _e2975;
+                phi_2568_ = _e2980;
             }
-            let _e3072 = phi_2986_;
-            let _e3074 = phi_2518_;
+            let _e3072 = phi_3043_;
+            let _e3074 = phi_2568_;
             local_304 = _e3074;
             let _e3075 = local_37;
             if _e3075 {
@@ -3765,44 +3765,44 @@ fn function_() {
                     local_305 = _e3084;
                     if _e3084 {
                         let _e3085 = local_1;
-                        phi_2535_ = type_16(1u, _e3085);
+                        phi_2585_ = type_16(1u, _e3085);
                     } else {
-                        phi_2535_ = type_16();
+                        phi_2585_ = type_16();
                     }
-                    let _e3088 = phi_2535_;
+                    let _e3088 = phi_2585_;
                     let _e3089 = local_305;
-                    phi_2537_ = _e3088;
-                    phi_2538_ = select(true, false, _e3089);
+                    phi_2587_ = _e3088;
+                    phi_2588_ = select(true, false, _e3089);
                 } else {
-                    phi_2537_ = type_16();
-                    phi_2538_ = true;
+                    phi_2587_ = type_16();
+                    phi_2588_ = true;
                 }
-                let _e3092 = phi_2537_;
-                let _e3094 = phi_2538_;
-                phi_2539_ = _e3092;
-                phi_2540_ = _e3094;
+                let _e3092 = phi_2587_;
+                let _e3094 = phi_2588_;
+                phi_2589_ = _e3092;
+                phi_2590_ = _e3094;
             } else {
-                phi_2539_ = type_16();
-                phi_2540_ = true;
+                phi_2589_ = type_16();
+                phi_2590_ = true;
             }
-            let _e3096 = phi_2539_;
-            let _e3098 = phi_2540_;
+            let _e3096 = phi_2589_;
+            let _e3098 = phi_2590_;
             if _e3098 {
-                phi_2545_ = type_16(0u, type_16().member_1);
+                phi_2595_ = type_16(0u, type_16().member_1);
             } else {
-                phi_2545_ = _e3096;
+                phi_2595_ = _e3096;
             }
-            let _e3103 = phi_2545_;
+            let _e3103 = phi_2595_;
             local_306 = _e3103.member_1;
             if (bitcast<i32>(_e3103.member) != 0i) {
                 let _e3138 = local_306;
                 let _e3140 = local_306;
                 local_307 = select(firstTrailingBit(_e3138), 32u, (_e3140 == 0u));
-                phi_2557_ = 0u;
-                phi_2560_ = 256u;
+                phi_2607_ = 0u;
+                phi_2610_ = 256u;
                 loop {
-                    let _e3144 = phi_2557_;
-                    let _e3146 = phi_2560_;
+                    let _e3144 = phi_2607_;
+                    let _e3146 = phi_2610_;
                     local_308 = _e3144;
                     local_309 = _e3146;
                     let _e3147 = local_309;
@@ -3825,16 +3825,16 @@ fn function_() {
                             local_313 = _e3162;
                             if (_e3162 < 1792u) {
                             } else {
-                                phi_2988_ = true;
+                                phi_3048_ = true;
                                 break;
                             }
                             let _e3164 = local_313;
                             let _e3166 = global_15[_e3164];
-                            phi_2584_ = _e3166;
+                            phi_2634_ = _e3166;
                         } else {
-                            phi_2584_ = 0u;
+                            phi_2634_ = 0u;
                         }
-                        let _e3168 = phi_2584_;
+                        let _e3168 = phi_2634_;
                         let _e3169 = subgroupAdd(_e3168);
                         local_314 = _e3169;
                         let _e3170 = local_312;
@@ -3848,7 +3848,7 @@ fn function_() {
                                 local_315 = _e3181;
                                 if (_e3181 < 1792u) {
                                 } else {
-                                    phi_2988_ = true;
+                                    phi_3048_ = true;
                                     break;
                                 }
                                 let _e3183 = local_315;
@@ -3862,24 +3862,24 @@ fn function_() {
                         let _e3188 = local_309;
                         let _e3191 = local_308;
                         let _e3192 = local_307;
-                        phi_2558_ = (_e3191 + _e3192);
-                        phi_2561_ = (_e3188 >> bitcast<u32>((_e3186 & 31u)));
+                        phi_2608_ = (_e3191 + _e3192);
+                        phi_2611_ = (_e3188 >> bitcast<u32>((_e3186 & 31u)));
                     } else {
-                        phi_2558_ = u32();
-                        phi_2561_ = u32();
+                        phi_2608_ = u32();
+                        phi_2611_ = u32();
                     }
-                    let _e3195 = phi_2558_;
-                    let _e3197 = phi_2561_;
+                    let _e3195 = phi_2608_;
+                    let _e3197 = phi_2611_;
                     continue;
                     continuing {
                         let _e3198 = local_310;
-                        phi_2557_ = _e3195;
-                        phi_2560_ = _e3197;
-                        phi_2988_ = _e3072;
+                        phi_2607_ = _e3195;
+                        phi_2610_ = _e3197;
+                        phi_3048_ = _e3072;
                         break if !(_e3198);
                     }
                 }
-                let _e3201 = phi_2988_;
+                let _e3201 = phi_3048_;
                 if _e3201 {
                     break;
                 }
@@ -3901,19 +3901,19 @@ fn function_() {
                     }
                     let _e3219 = local_317;
                     let _e3221 = global_15[_e3219];
-                    phi_2627_ = _e3221;
+                    phi_2682_ = _e3221;
                 } else {
-                    phi_2627_ = 0u;
+                    phi_2682_ = 0u;
                 }
-                let _e3223 = phi_2627_;
+                let _e3223 = phi_2682_;
                 let _e3224 = subgroupAdd(_e3223);
                 storageBarrier();
                 workgroupBarrier();
-                phi_2676_ = _e3224;
+                phi_2736_ = _e3224;
             } else {
-                phi_2632_ = 128u;
+                phi_2692_ = 128u;
                 loop {
-                    let _e3109 = phi_2632_;
+                    let _e3109 = phi_2692_;
                     local_318 = _e3109;
                     let _e3110 = local_318;
                     let _e3111 = (_e3110 > 0u);
@@ -3925,7 +3925,7 @@ fn function_() {
                             let _e3115 = local_228;
                             if _e3115 {
                             } else {
-                                phi_2978_ = true;
+                                phi_3038_ = true;
                                 break;
                             }
                             let _e3116 = global_15[_e2453];
@@ -3936,7 +3936,7 @@ fn function_() {
                             local_321 = _e3119;
                             if (_e3119 < 1792u) {
                             } else {
-                                phi_2978_ = true;
+                                phi_3038_ = true;
                                 break;
                             }
                             let _e3121 = local_321;
@@ -3946,7 +3946,7 @@ fn function_() {
                             let _e3126 = local_228;
                             if _e3126 {
                             } else {
-                                phi_2978_ = true;
+                                phi_3038_ = true;
                                 break;
                             }
                             let _e3127 = local_322;
@@ -3955,29 +3955,29 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e3128 = local_318;
-                        phi_2633_ = (_e3128 / 2u);
+                        phi_2693_ = (_e3128 / 2u);
                     } else {
-                        phi_2633_ = u32();
+                        phi_2693_ = u32();
                     }
-                    let _e3131 = phi_2633_;
+                    let _e3131 = phi_2693_;
                     continue;
                     continuing {
                         let _e3132 = local_319;
-                        phi_2632_ = _e3131;
-                        phi_2978_ = _e3072;
+                        phi_2692_ = _e3131;
+                        phi_3038_ = _e3072;
                         break if !(_e3132);
                     }
                 }
-                let _e3135 = phi_2978_;
+                let _e3135 = phi_3038_;
                 if _e3135 {
                     break;
                 }
                 let _e3137 = global_15[1536u];
                 storageBarrier();
                 workgroupBarrier();
-                phi_2676_ = _e3137;
+                phi_2736_ = _e3137;
             }
-            let _e3226 = phi_2676_;
+            let _e3226 = phi_2736_;
             local_323 = _e3226;
             let _e3227 = local;
             if (_e3227 == 0u) {

@@ -230,191 +230,191 @@ fn function_() {
     var local_151: u32;
     var local_152: u32;
     var phi_135_: u32;
-    var phi_1534_: bool;
+    var phi_1563_: bool;
     var phi_141_: u32;
     var phi_144_: u32;
     var phi_181_: u32;
     var phi_212_: u32;
     var phi_182_: u32;
     var phi_213_: bool;
-    var phi_1530_: bool;
+    var phi_1560_: bool;
     var phi_245_: type_20;
     var phi_254_: u32;
-    var phi_1539_: bool;
+    var phi_1569_: bool;
     var phi_255_: u32;
-    var phi_1538_: bool;
+    var phi_1568_: bool;
     var phi_257_: u32;
     var phi_258_: u32;
-    var phi_1537_: bool;
+    var phi_1567_: bool;
     var phi_142_: u32;
     var phi_145_: u32;
     var phi_259_: bool;
-    var phi_1536_: bool;
+    var phi_1566_: bool;
     var phi_286_: type_15;
     var phi_288_: type_15;
     var phi_289_: bool;
     var phi_290_: type_15;
     var phi_291_: bool;
     var phi_296_: type_15;
-    var phi_383_: u32;
-    var phi_384_: u32;
-    var phi_1542_: bool;
+    var phi_393_: u32;
+    var phi_394_: u32;
+    var phi_1572_: bool;
     var phi_308_: u32;
     var phi_311_: u32;
     var phi_335_: u32;
     var phi_309_: u32;
     var phi_312_: u32;
-    var phi_1550_: bool;
-    var phi_378_: u32;
-    var phi_1564_: bool;
-    var phi_427_: u32;
-    var phi_1562_: bool;
-    var phi_436_: u32;
-    var phi_439_: u32;
-    var phi_463_: u32;
-    var phi_1560_: bool;
-    var phi_468_: u32;
-    var phi_471_: u32;
-    var phi_508_: u32;
-    var phi_539_: u32;
-    var phi_509_: u32;
-    var phi_540_: bool;
-    var phi_1556_: bool;
-    var phi_572_: type_20;
-    var phi_581_: u32;
-    var phi_1569_: bool;
-    var phi_582_: u32;
-    var phi_1568_: bool;
-    var phi_584_: u32;
-    var phi_585_: u32;
-    var phi_1567_: bool;
-    var phi_469_: u32;
-    var phi_472_: u32;
-    var phi_586_: bool;
-    var phi_1566_: bool;
-    var phi_613_: type_15;
-    var phi_615_: type_15;
-    var phi_616_: bool;
-    var phi_617_: type_15;
-    var phi_618_: bool;
-    var phi_623_: type_15;
-    var phi_710_: u32;
-    var phi_711_: u32;
-    var phi_1572_: bool;
-    var phi_635_: u32;
-    var phi_638_: u32;
-    var phi_662_: u32;
-    var phi_636_: u32;
-    var phi_639_: u32;
     var phi_1580_: bool;
-    var phi_705_: u32;
-    var phi_1589_: bool;
-    var phi_754_: u32;
-    var phi_762_: u32;
-    var phi_1587_: bool;
+    var phi_383_: u32;
+    var phi_1593_: bool;
     var phi_437_: u32;
-    var phi_440_: u32;
-    var phi_1586_: bool;
-    var phi_1595_: bool;
-    var phi_767_: u32;
-    var phi_770_: u32;
-    var phi_807_: u32;
-    var phi_838_: u32;
-    var phi_808_: u32;
-    var phi_839_: bool;
     var phi_1591_: bool;
-    var phi_871_: type_20;
-    var phi_880_: u32;
+    var phi_446_: u32;
+    var phi_449_: u32;
+    var phi_473_: u32;
+    var phi_1589_: bool;
+    var phi_478_: u32;
+    var phi_481_: u32;
+    var phi_518_: u32;
+    var phi_549_: u32;
+    var phi_519_: u32;
+    var phi_550_: bool;
+    var phi_1586_: bool;
+    var phi_582_: type_20;
+    var phi_591_: u32;
     var phi_1599_: bool;
-    var phi_881_: u32;
+    var phi_592_: u32;
     var phi_1598_: bool;
-    var phi_883_: u32;
-    var phi_884_: u32;
+    var phi_594_: u32;
+    var phi_595_: u32;
     var phi_1597_: bool;
-    var phi_768_: u32;
-    var phi_771_: u32;
-    var phi_885_: bool;
+    var phi_479_: u32;
+    var phi_482_: u32;
+    var phi_596_: bool;
     var phi_1596_: bool;
-    var phi_912_: type_15;
-    var phi_914_: type_15;
-    var phi_915_: bool;
-    var phi_916_: type_15;
-    var phi_917_: bool;
-    var phi_922_: type_15;
-    var phi_1062_: u32;
-    var phi_1065_: u32;
-    var phi_1101_: u32;
-    var phi_1063_: u32;
-    var phi_1066_: u32;
+    var phi_623_: type_15;
+    var phi_625_: type_15;
+    var phi_626_: bool;
+    var phi_627_: type_15;
+    var phi_628_: bool;
+    var phi_633_: type_15;
+    var phi_730_: u32;
+    var phi_731_: u32;
     var phi_1602_: bool;
-    var phi_954_: u32;
-    var phi_957_: u32;
-    var phi_958_: u32;
-    var phi_960_: u32;
-    var phi_988_: u32;
-    var phi_955_: u32;
-    var phi_959_: u32;
-    var phi_961_: u32;
-    var phi_1612_: bool;
-    var phi_1005_: u32;
-    var phi_1008_: u32;
-    var phi_1010_: u32;
-    var phi_1025_: u32;
-    var phi_1006_: u32;
-    var phi_1009_: u32;
-    var phi_1011_: u32;
+    var phi_645_: u32;
+    var phi_648_: u32;
+    var phi_672_: u32;
+    var phi_646_: u32;
+    var phi_649_: u32;
+    var phi_1610_: bool;
+    var phi_720_: u32;
+    var phi_1619_: bool;
+    var phi_774_: u32;
+    var phi_782_: u32;
     var phi_1617_: bool;
-    var phi_1630_: bool;
-    var phi_1116_: u32;
-    var phi_1130_: u32;
+    var phi_447_: u32;
+    var phi_450_: u32;
+    var phi_1616_: bool;
+    var phi_1624_: bool;
+    var phi_787_: u32;
+    var phi_790_: u32;
+    var phi_827_: u32;
+    var phi_858_: u32;
+    var phi_828_: u32;
+    var phi_859_: bool;
+    var phi_1621_: bool;
+    var phi_891_: type_20;
+    var phi_900_: u32;
+    var phi_1629_: bool;
+    var phi_901_: u32;
     var phi_1628_: bool;
-    var phi_1134_: u32;
-    var phi_1137_: type_20;
-    var phi_1139_: u32;
-    var phi_1141_: u32;
-    var phi_1143_: u32;
-    var phi_1145_: u32;
-    var phi_1147_: u32;
-    var phi_1149_: u32;
-    var phi_1207_: u32;
-    var phi_1238_: u32;
-    var phi_1208_: u32;
-    var phi_1239_: bool;
-    var phi_1623_: bool;
-    var phi_1271_: type_20;
-    var phi_1639_: bool;
-    var phi_1273_: type_20;
-    var phi_1300_: type_20;
-    var phi_1302_: type_20;
-    var phi_1386_: u32;
-    var phi_1387_: u32;
-    var phi_1348_: u32;
-    var phi_1349_: u32;
-    var phi_1388_: u32;
-    var phi_1389_: u32;
-    var phi_1390_: u32;
-    var phi_1391_: u32;
-    var phi_1392_: u32;
-    var phi_1633_: bool;
-    var phi_1394_: u32;
-    var phi_1395_: type_20;
-    var phi_1396_: u32;
-    var phi_1397_: u32;
-    var phi_1398_: u32;
-    var phi_1399_: u32;
-    var phi_1400_: u32;
-    var phi_1401_: u32;
+    var phi_903_: u32;
+    var phi_904_: u32;
+    var phi_1627_: bool;
+    var phi_788_: u32;
+    var phi_791_: u32;
+    var phi_905_: bool;
+    var phi_1626_: bool;
+    var phi_932_: type_15;
+    var phi_934_: type_15;
+    var phi_935_: bool;
+    var phi_936_: type_15;
+    var phi_937_: bool;
+    var phi_942_: type_15;
+    var phi_1092_: u32;
+    var phi_1095_: u32;
+    var phi_1131_: u32;
+    var phi_1093_: u32;
+    var phi_1096_: u32;
     var phi_1632_: bool;
-    var phi_1135_: u32;
-    var phi_1138_: type_20;
-    var phi_1140_: u32;
-    var phi_1142_: u32;
-    var phi_1144_: u32;
+    var phi_979_: u32;
+    var phi_982_: u32;
+    var phi_983_: u32;
+    var phi_985_: u32;
+    var phi_1013_: u32;
+    var phi_980_: u32;
+    var phi_984_: u32;
+    var phi_986_: u32;
+    var phi_1642_: bool;
+    var phi_1035_: u32;
+    var phi_1038_: u32;
+    var phi_1040_: u32;
+    var phi_1055_: u32;
+    var phi_1036_: u32;
+    var phi_1039_: u32;
+    var phi_1041_: u32;
+    var phi_1647_: bool;
+    var phi_1659_: bool;
     var phi_1146_: u32;
-    var phi_1148_: u32;
-    var phi_1150_: u32;
-    var phi_1402_: bool;
-    var phi_1631_: bool;
+    var phi_1160_: u32;
+    var phi_1657_: bool;
+    var phi_1164_: u32;
+    var phi_1167_: type_20;
+    var phi_1169_: u32;
+    var phi_1171_: u32;
+    var phi_1173_: u32;
+    var phi_1175_: u32;
+    var phi_1177_: u32;
+    var phi_1179_: u32;
+    var phi_1237_: u32;
+    var phi_1268_: u32;
+    var phi_1238_: u32;
+    var phi_1269_: bool;
+    var phi_1653_: bool;
+    var phi_1301_: type_20;
+    var phi_1667_: bool;
+    var phi_1303_: type_20;
+    var phi_1330_: type_20;
+    var phi_1332_: type_20;
+    var phi_1416_: u32;
+    var phi_1417_: u32;
+    var phi_1378_: u32;
+    var phi_1379_: u32;
+    var phi_1418_: u32;
+    var phi_1419_: u32;
+    var phi_1420_: u32;
+    var phi_1421_: u32;
+    var phi_1422_: u32;
+    var phi_1663_: bool;
+    var phi_1424_: u32;
+    var phi_1425_: type_20;
+    var phi_1426_: u32;
+    var phi_1427_: u32;
+    var phi_1428_: u32;
+    var phi_1429_: u32;
+    var phi_1430_: u32;
+    var phi_1431_: u32;
+    var phi_1662_: bool;
+    var phi_1165_: u32;
+    var phi_1168_: type_20;
+    var phi_1170_: u32;
+    var phi_1172_: u32;
+    var phi_1174_: u32;
+    var phi_1176_: u32;
+    var phi_1178_: u32;
+    var phi_1180_: u32;
+    var phi_1432_: bool;
+    var phi_1661_: bool;
     var local_153: u32;
     var local_154: u32;
     var local_155: u32;
@@ -454,11 +454,11 @@ fn function_() {
             local_12 = _e222;
             let _e223 = local;
             let _e224 = (_e223 * _e219);
-            phi_1534_ = false;
+            phi_1563_ = false;
             phi_141_ = _e224;
             phi_144_ = 0u;
             loop {
-                let _e226 = phi_1534_;
+                let _e226 = phi_1563_;
                 let _e228 = phi_141_;
                 let _e230 = phi_144_;
                 local_13 = _e228;
@@ -475,7 +475,7 @@ fn function_() {
                         let _e241 = local_6;
                         if (_e240 < _e241) {
                         } else {
-                            phi_1536_ = true;
+                            phi_1566_ = true;
                             break;
                         }
                         let _e243 = local_13;
@@ -494,7 +494,7 @@ fn function_() {
                                     let _e257 = local_5;
                                     if (_e256 < _e257) {
                                     } else {
-                                        phi_1530_ = true;
+                                        phi_1560_ = true;
                                         break;
                                     }
                                     let _e259 = local_16;
@@ -521,12 +521,12 @@ fn function_() {
                                 continuing {
                                     let _e273 = local_17;
                                     phi_181_ = _e270;
-                                    phi_1530_ = _e226;
+                                    phi_1560_ = _e226;
                                     break if !(_e273);
                                 }
                             }
-                            let _e276 = phi_1530_;
-                            phi_1536_ = _e276;
+                            let _e276 = phi_1560_;
+                            phi_1566_ = _e276;
                             if _e276 {
                                 break;
                             }
@@ -537,7 +537,7 @@ fn function_() {
                             let _e281 = local_5;
                             if (_e280 < _e281) {
                             } else {
-                                phi_1536_ = true;
+                                phi_1566_ = true;
                                 break;
                             }
                             let _e283 = local_18;
@@ -561,37 +561,37 @@ fn function_() {
                                 phi_254_ = _e230;
                             }
                             let _e307 = phi_254_;
-                            phi_1539_ = _e276;
+                            phi_1569_ = _e276;
                             phi_255_ = _e307;
                         } else {
-                            phi_1539_ = _e226;
+                            phi_1569_ = _e226;
                             phi_255_ = _e230;
                         }
-                        let _e309 = phi_1539_;
+                        let _e309 = phi_1569_;
                         let _e311 = phi_255_;
                         let _e312 = local_13;
-                        phi_1538_ = _e309;
+                        phi_1568_ = _e309;
                         phi_257_ = (_e312 + 1u);
                         phi_258_ = _e311;
                     } else {
-                        phi_1538_ = _e226;
+                        phi_1568_ = _e226;
                         phi_257_ = u32();
                         phi_258_ = u32();
                     }
-                    let _e315 = phi_1538_;
+                    let _e315 = phi_1568_;
                     let _e317 = phi_257_;
                     let _e319 = phi_258_;
-                    phi_1537_ = _e315;
+                    phi_1567_ = _e315;
                     phi_142_ = _e317;
                     phi_145_ = _e319;
                     phi_259_ = _e239;
                 } else {
-                    phi_1537_ = _e226;
+                    phi_1567_ = _e226;
                     phi_142_ = u32();
                     phi_145_ = u32();
                     phi_259_ = false;
                 }
-                let _e321 = phi_1537_;
+                let _e321 = phi_1567_;
                 let _e323 = phi_142_;
                 let _e325 = phi_145_;
                 let _e327 = phi_259_;
@@ -599,14 +599,14 @@ fn function_() {
                 continue;
                 continuing {
                     let _e328 = local_21;
-                    phi_1534_ = _e321;
+                    phi_1563_ = _e321;
                     phi_141_ = _e323;
                     phi_144_ = _e325;
-                    phi_1536_ = _e321;
+                    phi_1566_ = _e321;
                     break if !(_e328);
                 }
             }
-            let _e331 = phi_1536_;
+            let _e331 = phi_1566_;
             if _e331 {
                 break;
             }
@@ -695,7 +695,7 @@ fn function_() {
                             local_32 = _e424;
                             if (_e424 < 512u) {
                             } else {
-                                phi_1550_ = true;
+                                phi_1580_ = true;
                                 break;
                             }
                             let _e426 = local_32;
@@ -718,7 +718,7 @@ fn function_() {
                                 local_34 = _e442;
                                 if (_e442 < 512u) {
                                 } else {
-                                    phi_1550_ = true;
+                                    phi_1580_ = true;
                                     break;
                                 }
                                 let _e444 = local_34;
@@ -745,11 +745,11 @@ fn function_() {
                         let _e459 = local_29;
                         phi_308_ = _e456;
                         phi_311_ = _e458;
-                        phi_1550_ = _e331;
+                        phi_1580_ = _e331;
                         break if !(_e459);
                     }
                 }
-                let _e462 = phi_1550_;
+                let _e462 = phi_1580_;
                 if _e462 {
                     break;
                 }
@@ -771,20 +771,20 @@ fn function_() {
                     }
                     let _e479 = local_36;
                     let _e481 = global_1[_e479];
-                    phi_378_ = _e481;
+                    phi_383_ = _e481;
                 } else {
-                    phi_378_ = 0u;
+                    phi_383_ = 0u;
                 }
-                let _e483 = phi_378_;
+                let _e483 = phi_383_;
                 let _e484 = subgroupAdd(_e483);
                 storageBarrier();
                 workgroupBarrier();
-                phi_1564_ = _e462;
-                phi_427_ = _e484;
+                phi_1593_ = _e462;
+                phi_437_ = _e484;
             } else {
-                phi_383_ = 128u;
+                phi_393_ = 128u;
                 loop {
-                    let _e372 = phi_383_;
+                    let _e372 = phi_393_;
                     local_37 = _e372;
                     let _e373 = local_37;
                     let _e374 = (_e373 > 0u);
@@ -796,7 +796,7 @@ fn function_() {
                             let _e378 = local_22;
                             if _e378 {
                             } else {
-                                phi_1542_ = true;
+                                phi_1572_ = true;
                                 break;
                             }
                             let _e379 = global_1[_e334];
@@ -807,7 +807,7 @@ fn function_() {
                             local_40 = _e382;
                             if (_e382 < 512u) {
                             } else {
-                                phi_1542_ = true;
+                                phi_1572_ = true;
                                 break;
                             }
                             let _e384 = local_40;
@@ -817,7 +817,7 @@ fn function_() {
                             let _e389 = local_22;
                             if _e389 {
                             } else {
-                                phi_1542_ = true;
+                                phi_1572_ = true;
                                 break;
                             }
                             let _e390 = local_41;
@@ -826,41 +826,41 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e391 = local_37;
-                        phi_384_ = (_e391 / 2u);
+                        phi_394_ = (_e391 / 2u);
                     } else {
-                        phi_384_ = u32();
+                        phi_394_ = u32();
                     }
-                    let _e394 = phi_384_;
+                    let _e394 = phi_394_;
                     continue;
                     continuing {
                         let _e395 = local_38;
-                        phi_383_ = _e394;
-                        phi_1542_ = _e331;
+                        phi_393_ = _e394;
+                        phi_1572_ = _e331;
                         break if !(_e395);
                     }
                 }
-                let _e398 = phi_1542_;
+                let _e398 = phi_1572_;
                 if _e398 {
                     break;
                 }
                 let _e400 = global_1[0u];
                 storageBarrier();
                 workgroupBarrier();
-                phi_1564_ = _e398;
-                phi_427_ = _e400;
+                phi_1593_ = _e398;
+                phi_437_ = _e400;
             }
-            let _e486 = phi_1564_;
-            let _e488 = phi_427_;
+            let _e486 = phi_1593_;
+            let _e488 = phi_437_;
             let _e491 = global_6.member.member_17;
             local_42 = _e491;
             let _e493 = local_12;
-            phi_1562_ = _e486;
-            phi_436_ = _e222;
-            phi_439_ = select(0u, _e493, (_e488 <= _e491));
+            phi_1591_ = _e486;
+            phi_446_ = _e222;
+            phi_449_ = select(0u, _e493, (_e488 <= _e491));
             loop {
-                let _e496 = phi_1562_;
-                let _e498 = phi_436_;
-                let _e500 = phi_439_;
+                let _e496 = phi_1591_;
+                let _e498 = phi_446_;
+                let _e500 = phi_449_;
                 local_43 = _e498;
                 local_44 = _e500;
                 let _e501 = local_44;
@@ -875,20 +875,20 @@ fn function_() {
                     local_46 = _e507;
                     if ((_e506 % 2u) > 0u) {
                         let _e510 = local_46;
-                        phi_463_ = (_e510 + 1u);
+                        phi_473_ = (_e510 + 1u);
                     } else {
-                        phi_463_ = _e507;
+                        phi_473_ = _e507;
                     }
-                    let _e513 = phi_463_;
+                    let _e513 = phi_473_;
                     let _e514 = local_44;
                     local_47 = (_e514 + _e513);
-                    phi_1560_ = _e496;
-                    phi_468_ = _e224;
-                    phi_471_ = 0u;
+                    phi_1589_ = _e496;
+                    phi_478_ = _e224;
+                    phi_481_ = 0u;
                     loop {
-                        let _e517 = phi_1560_;
-                        let _e519 = phi_468_;
-                        let _e521 = phi_471_;
+                        let _e517 = phi_1589_;
+                        let _e519 = phi_478_;
+                        let _e521 = phi_481_;
                         local_48 = _e519;
                         local_49 = _e521;
                         let _e522 = local_48;
@@ -903,15 +903,15 @@ fn function_() {
                                 let _e532 = local_6;
                                 if (_e531 < _e532) {
                                 } else {
-                                    phi_1566_ = true;
+                                    phi_1596_ = true;
                                     break;
                                 }
                                 let _e534 = local_48;
                                 let _e537 = global_9.member[_e534];
                                 if ((_e537 & 1u) == 0u) {
-                                    phi_508_ = 0u;
+                                    phi_518_ = 0u;
                                     loop {
-                                        let _e541 = phi_508_;
+                                        let _e541 = phi_518_;
                                         local_50 = _e541;
                                         let _e542 = local_50;
                                         if (_e542 < 4u) {
@@ -922,7 +922,7 @@ fn function_() {
                                             let _e548 = local_5;
                                             if (_e547 < _e548) {
                                             } else {
-                                                phi_1556_ = true;
+                                                phi_1586_ = true;
                                                 break;
                                             }
                                             let _e550 = local_51;
@@ -931,30 +931,30 @@ fn function_() {
                                             let _e555 = (_e553 > _e554);
                                             if _e555 {
                                                 let _e556 = local_50;
-                                                phi_539_ = (_e556 + 1u);
+                                                phi_549_ = (_e556 + 1u);
                                             } else {
-                                                phi_539_ = u32();
+                                                phi_549_ = u32();
                                             }
-                                            let _e559 = phi_539_;
-                                            phi_509_ = _e559;
-                                            phi_540_ = _e555;
+                                            let _e559 = phi_549_;
+                                            phi_519_ = _e559;
+                                            phi_550_ = _e555;
                                         } else {
-                                            phi_509_ = u32();
-                                            phi_540_ = false;
+                                            phi_519_ = u32();
+                                            phi_550_ = false;
                                         }
-                                        let _e561 = phi_509_;
-                                        let _e563 = phi_540_;
+                                        let _e561 = phi_519_;
+                                        let _e563 = phi_550_;
                                         local_52 = _e563;
                                         continue;
                                         continuing {
                                             let _e564 = local_52;
-                                            phi_508_ = _e561;
-                                            phi_1556_ = _e517;
+                                            phi_518_ = _e561;
+                                            phi_1586_ = _e517;
                                             break if !(_e564);
                                         }
                                     }
-                                    let _e567 = phi_1556_;
-                                    phi_1566_ = _e567;
+                                    let _e567 = phi_1586_;
+                                    phi_1596_ = _e567;
                                     if _e567 {
                                         break;
                                     }
@@ -965,7 +965,7 @@ fn function_() {
                                     let _e572 = local_5;
                                     if (_e571 < _e572) {
                                     } else {
-                                        phi_1566_ = true;
+                                        phi_1596_ = true;
                                         break;
                                     }
                                     let _e574 = local_53;
@@ -975,74 +975,74 @@ fn function_() {
                                     if (_e577 <= _e578) {
                                         let _e583 = local_50;
                                         let _e584 = local_54;
-                                        phi_572_ = type_20(1u, type_15(_e583, _e584));
+                                        phi_582_ = type_20(1u, type_15(_e583, _e584));
                                     } else {
-                                        phi_572_ = type_20(0u, type_20().member_1);
+                                        phi_582_ = type_20(0u, type_20().member_1);
                                     }
-                                    let _e588 = phi_572_;
+                                    let _e588 = phi_582_;
                                     local_55 = _e588;
                                     if (bitcast<i32>(_e588.member) != 0i) {
                                         let _e592 = local_55;
                                         let _e595 = local_49;
-                                        phi_581_ = (_e595 + _e592.member_1.member_1);
+                                        phi_591_ = (_e595 + _e592.member_1.member_1);
                                     } else {
-                                        phi_581_ = _e521;
+                                        phi_591_ = _e521;
                                     }
-                                    let _e598 = phi_581_;
-                                    phi_1569_ = _e567;
-                                    phi_582_ = _e598;
+                                    let _e598 = phi_591_;
+                                    phi_1599_ = _e567;
+                                    phi_592_ = _e598;
                                 } else {
-                                    phi_1569_ = _e517;
-                                    phi_582_ = _e521;
+                                    phi_1599_ = _e517;
+                                    phi_592_ = _e521;
                                 }
-                                let _e600 = phi_1569_;
-                                let _e602 = phi_582_;
+                                let _e600 = phi_1599_;
+                                let _e602 = phi_592_;
                                 let _e603 = local_48;
-                                phi_1568_ = _e600;
-                                phi_584_ = (_e603 + 1u);
-                                phi_585_ = _e602;
+                                phi_1598_ = _e600;
+                                phi_594_ = (_e603 + 1u);
+                                phi_595_ = _e602;
                             } else {
-                                phi_1568_ = _e517;
-                                phi_584_ = u32();
-                                phi_585_ = u32();
+                                phi_1598_ = _e517;
+                                phi_594_ = u32();
+                                phi_595_ = u32();
                             }
-                            let _e606 = phi_1568_;
-                            let _e608 = phi_584_;
-                            let _e610 = phi_585_;
-                            phi_1567_ = _e606;
-                            phi_469_ = _e608;
-                            phi_472_ = _e610;
-                            phi_586_ = _e530;
+                            let _e606 = phi_1598_;
+                            let _e608 = phi_594_;
+                            let _e610 = phi_595_;
+                            phi_1597_ = _e606;
+                            phi_479_ = _e608;
+                            phi_482_ = _e610;
+                            phi_596_ = _e530;
                         } else {
-                            phi_1567_ = _e517;
-                            phi_469_ = u32();
-                            phi_472_ = u32();
-                            phi_586_ = false;
+                            phi_1597_ = _e517;
+                            phi_479_ = u32();
+                            phi_482_ = u32();
+                            phi_596_ = false;
                         }
-                        let _e612 = phi_1567_;
-                        let _e614 = phi_469_;
-                        let _e616 = phi_472_;
-                        let _e618 = phi_586_;
+                        let _e612 = phi_1597_;
+                        let _e614 = phi_479_;
+                        let _e616 = phi_482_;
+                        let _e618 = phi_596_;
                         local_56 = _e618;
                         continue;
                         continuing {
                             let _e619 = local_56;
-                            phi_1560_ = _e612;
-                            phi_468_ = _e614;
-                            phi_471_ = _e616;
-                            phi_1566_ = _e612;
+                            phi_1589_ = _e612;
+                            phi_478_ = _e614;
+                            phi_481_ = _e616;
+                            phi_1596_ = _e612;
                             break if !(_e619);
                         }
                     }
-                    let _e622 = phi_1566_;
-                    phi_1586_ = _e622;
+                    let _e622 = phi_1596_;
+                    phi_1616_ = _e622;
                     if _e622 {
                         break;
                     }
                     let _e623 = local_22;
                     if _e623 {
                     } else {
-                        phi_1586_ = true;
+                        phi_1616_ = true;
                         break;
                     }
                     let _e624 = local_49;
@@ -1060,44 +1060,44 @@ fn function_() {
                             local_57 = _e634;
                             if _e634 {
                                 let _e635 = local_1;
-                                phi_613_ = type_15(1u, _e635);
+                                phi_623_ = type_15(1u, _e635);
                             } else {
-                                phi_613_ = type_15();
+                                phi_623_ = type_15();
                             }
-                            let _e638 = phi_613_;
+                            let _e638 = phi_623_;
                             let _e639 = local_57;
-                            phi_615_ = _e638;
-                            phi_616_ = select(true, false, _e639);
+                            phi_625_ = _e638;
+                            phi_626_ = select(true, false, _e639);
                         } else {
-                            phi_615_ = type_15();
-                            phi_616_ = true;
+                            phi_625_ = type_15();
+                            phi_626_ = true;
                         }
-                        let _e642 = phi_615_;
-                        let _e644 = phi_616_;
-                        phi_617_ = _e642;
-                        phi_618_ = _e644;
+                        let _e642 = phi_625_;
+                        let _e644 = phi_626_;
+                        phi_627_ = _e642;
+                        phi_628_ = _e644;
                     } else {
-                        phi_617_ = type_15();
-                        phi_618_ = true;
+                        phi_627_ = type_15();
+                        phi_628_ = true;
                     }
-                    let _e646 = phi_617_;
-                    let _e648 = phi_618_;
+                    let _e646 = phi_627_;
+                    let _e648 = phi_628_;
                     if _e648 {
-                        phi_623_ = type_15(0u, type_15().member_1);
+                        phi_633_ = type_15(0u, type_15().member_1);
                     } else {
-                        phi_623_ = _e646;
+                        phi_633_ = _e646;
                     }
-                    let _e653 = phi_623_;
+                    let _e653 = phi_633_;
                     local_58 = _e653.member_1;
                     if (bitcast<i32>(_e653.member) != 0i) {
                         let _e688 = local_58;
                         let _e690 = local_58;
                         local_59 = select(firstTrailingBit(_e688), 32u, (_e690 == 0u));
-                        phi_635_ = 0u;
-                        phi_638_ = 256u;
+                        phi_645_ = 0u;
+                        phi_648_ = 256u;
                         loop {
-                            let _e694 = phi_635_;
-                            let _e696 = phi_638_;
+                            let _e694 = phi_645_;
+                            let _e696 = phi_648_;
                             local_60 = _e694;
                             local_61 = _e696;
                             let _e697 = local_61;
@@ -1120,16 +1120,16 @@ fn function_() {
                                     local_65 = _e711;
                                     if (_e711 < 512u) {
                                     } else {
-                                        phi_1580_ = true;
+                                        phi_1610_ = true;
                                         break;
                                     }
                                     let _e713 = local_65;
                                     let _e715 = global_1[_e713];
-                                    phi_662_ = _e715;
+                                    phi_672_ = _e715;
                                 } else {
-                                    phi_662_ = 0u;
+                                    phi_672_ = 0u;
                                 }
-                                let _e717 = phi_662_;
+                                let _e717 = phi_672_;
                                 let _e718 = subgroupAdd(_e717);
                                 local_66 = _e718;
                                 let _e719 = local_64;
@@ -1143,7 +1143,7 @@ fn function_() {
                                         local_67 = _e729;
                                         if (_e729 < 512u) {
                                         } else {
-                                            phi_1580_ = true;
+                                            phi_1610_ = true;
                                             break;
                                         }
                                         let _e731 = local_67;
@@ -1157,25 +1157,25 @@ fn function_() {
                                 let _e736 = local_61;
                                 let _e739 = local_60;
                                 let _e740 = local_59;
-                                phi_636_ = (_e739 + _e740);
-                                phi_639_ = (_e736 >> bitcast<u32>((_e734 & 31u)));
+                                phi_646_ = (_e739 + _e740);
+                                phi_649_ = (_e736 >> bitcast<u32>((_e734 & 31u)));
                             } else {
-                                phi_636_ = u32();
-                                phi_639_ = u32();
+                                phi_646_ = u32();
+                                phi_649_ = u32();
                             }
-                            let _e743 = phi_636_;
-                            let _e745 = phi_639_;
+                            let _e743 = phi_646_;
+                            let _e745 = phi_649_;
                             continue;
                             continuing {
                                 let _e746 = local_62;
-                                phi_635_ = _e743;
-                                phi_638_ = _e745;
-                                phi_1580_ = _e622;
+                                phi_645_ = _e743;
+                                phi_648_ = _e745;
+                                phi_1610_ = _e622;
                                 break if !(_e746);
                             }
                         }
-                        let _e749 = phi_1580_;
-                        phi_1586_ = _e749;
+                        let _e749 = phi_1610_;
+                        phi_1616_ = _e749;
                         if _e749 {
                             break;
                         }
@@ -1193,25 +1193,25 @@ fn function_() {
                             local_69 = _e764;
                             if (_e764 < 512u) {
                             } else {
-                                phi_1586_ = true;
+                                phi_1616_ = true;
                                 break;
                             }
                             let _e766 = local_69;
                             let _e768 = global_1[_e766];
-                            phi_705_ = _e768;
+                            phi_720_ = _e768;
                         } else {
-                            phi_705_ = 0u;
+                            phi_720_ = 0u;
                         }
-                        let _e770 = phi_705_;
+                        let _e770 = phi_720_;
                         let _e771 = subgroupAdd(_e770);
                         storageBarrier();
                         workgroupBarrier();
-                        phi_1589_ = _e749;
-                        phi_754_ = _e771;
+                        phi_1619_ = _e749;
+                        phi_774_ = _e771;
                     } else {
-                        phi_710_ = 128u;
+                        phi_730_ = 128u;
                         loop {
-                            let _e659 = phi_710_;
+                            let _e659 = phi_730_;
                             local_70 = _e659;
                             let _e660 = local_70;
                             let _e661 = (_e660 > 0u);
@@ -1223,7 +1223,7 @@ fn function_() {
                                     let _e665 = local_22;
                                     if _e665 {
                                     } else {
-                                        phi_1572_ = true;
+                                        phi_1602_ = true;
                                         break;
                                     }
                                     let _e666 = global_1[_e334];
@@ -1234,7 +1234,7 @@ fn function_() {
                                     local_73 = _e669;
                                     if (_e669 < 512u) {
                                     } else {
-                                        phi_1572_ = true;
+                                        phi_1602_ = true;
                                         break;
                                     }
                                     let _e671 = local_73;
@@ -1244,7 +1244,7 @@ fn function_() {
                                     let _e676 = local_22;
                                     if _e676 {
                                     } else {
-                                        phi_1572_ = true;
+                                        phi_1602_ = true;
                                         break;
                                     }
                                     let _e677 = local_74;
@@ -1253,77 +1253,77 @@ fn function_() {
                                 storageBarrier();
                                 workgroupBarrier();
                                 let _e678 = local_70;
-                                phi_711_ = (_e678 / 2u);
+                                phi_731_ = (_e678 / 2u);
                             } else {
-                                phi_711_ = u32();
+                                phi_731_ = u32();
                             }
-                            let _e681 = phi_711_;
+                            let _e681 = phi_731_;
                             continue;
                             continuing {
                                 let _e682 = local_71;
-                                phi_710_ = _e681;
-                                phi_1572_ = _e622;
+                                phi_730_ = _e681;
+                                phi_1602_ = _e622;
                                 break if !(_e682);
                             }
                         }
-                        let _e685 = phi_1572_;
-                        phi_1586_ = _e685;
+                        let _e685 = phi_1602_;
+                        phi_1616_ = _e685;
                         if _e685 {
                             break;
                         }
                         let _e687 = global_1[0u];
                         storageBarrier();
                         workgroupBarrier();
-                        phi_1589_ = _e685;
-                        phi_754_ = _e687;
+                        phi_1619_ = _e685;
+                        phi_774_ = _e687;
                     }
-                    let _e773 = phi_1589_;
-                    let _e775 = phi_754_;
+                    let _e773 = phi_1619_;
+                    let _e775 = phi_774_;
                     let _e776 = local_42;
                     let _e777 = (_e775 <= _e776);
                     local_75 = _e777;
                     if _e777 {
-                        phi_762_ = _e498;
+                        phi_782_ = _e498;
                     } else {
                         let _e778 = local_47;
-                        phi_762_ = (_e778 - 1u);
+                        phi_782_ = (_e778 - 1u);
                     }
-                    let _e781 = phi_762_;
+                    let _e781 = phi_782_;
                     let _e782 = local_75;
                     let _e783 = local_47;
                     let _e784 = local_44;
-                    phi_1587_ = _e773;
-                    phi_437_ = _e781;
-                    phi_440_ = select(_e784, _e783, _e782);
+                    phi_1617_ = _e773;
+                    phi_447_ = _e781;
+                    phi_450_ = select(_e784, _e783, _e782);
                 } else {
-                    phi_1587_ = _e496;
-                    phi_437_ = u32();
-                    phi_440_ = u32();
+                    phi_1617_ = _e496;
+                    phi_447_ = u32();
+                    phi_450_ = u32();
                 }
-                let _e787 = phi_1587_;
-                let _e789 = phi_437_;
-                let _e791 = phi_440_;
+                let _e787 = phi_1617_;
+                let _e789 = phi_447_;
+                let _e791 = phi_450_;
                 continue;
                 continuing {
                     let _e792 = local_45;
-                    phi_1562_ = _e787;
-                    phi_436_ = _e789;
-                    phi_439_ = _e791;
-                    phi_1586_ = _e787;
+                    phi_1591_ = _e787;
+                    phi_446_ = _e789;
+                    phi_449_ = _e791;
+                    phi_1616_ = _e787;
                     break if !(_e792);
                 }
             }
-            let _e795 = phi_1586_;
+            let _e795 = phi_1616_;
             if _e795 {
                 break;
             }
-            phi_1595_ = _e795;
-            phi_767_ = _e224;
-            phi_770_ = 0u;
+            phi_1624_ = _e795;
+            phi_787_ = _e224;
+            phi_790_ = 0u;
             loop {
-                let _e797 = phi_1595_;
-                let _e799 = phi_767_;
-                let _e801 = phi_770_;
+                let _e797 = phi_1624_;
+                let _e799 = phi_787_;
+                let _e801 = phi_790_;
                 local_76 = _e799;
                 local_77 = _e801;
                 let _e802 = local_76;
@@ -1338,15 +1338,15 @@ fn function_() {
                         let _e812 = local_6;
                         if (_e811 < _e812) {
                         } else {
-                            phi_1596_ = true;
+                            phi_1626_ = true;
                             break;
                         }
                         let _e814 = local_76;
                         let _e817 = global_9.member[_e814];
                         if ((_e817 & 1u) == 0u) {
-                            phi_807_ = 0u;
+                            phi_827_ = 0u;
                             loop {
-                                let _e821 = phi_807_;
+                                let _e821 = phi_827_;
                                 local_78 = _e821;
                                 let _e822 = local_78;
                                 if (_e822 < 4u) {
@@ -1357,7 +1357,7 @@ fn function_() {
                                     let _e828 = local_5;
                                     if (_e827 < _e828) {
                                     } else {
-                                        phi_1591_ = true;
+                                        phi_1621_ = true;
                                         break;
                                     }
                                     let _e830 = local_79;
@@ -1366,30 +1366,30 @@ fn function_() {
                                     let _e835 = (_e833 > _e834);
                                     if _e835 {
                                         let _e836 = local_78;
-                                        phi_838_ = (_e836 + 1u);
+                                        phi_858_ = (_e836 + 1u);
                                     } else {
-                                        phi_838_ = u32();
+                                        phi_858_ = u32();
                                     }
-                                    let _e839 = phi_838_;
-                                    phi_808_ = _e839;
-                                    phi_839_ = _e835;
+                                    let _e839 = phi_858_;
+                                    phi_828_ = _e839;
+                                    phi_859_ = _e835;
                                 } else {
-                                    phi_808_ = u32();
-                                    phi_839_ = false;
+                                    phi_828_ = u32();
+                                    phi_859_ = false;
                                 }
-                                let _e841 = phi_808_;
-                                let _e843 = phi_839_;
+                                let _e841 = phi_828_;
+                                let _e843 = phi_859_;
                                 local_80 = _e843;
                                 continue;
                                 continuing {
                                     let _e844 = local_80;
-                                    phi_807_ = _e841;
-                                    phi_1591_ = _e797;
+                                    phi_827_ = _e841;
+                                    phi_1621_ = _e797;
                                     break if !(_e844);
                                 }
                             }
-                            let _e847 = phi_1591_;
-                            phi_1596_ = _e847;
+                            let _e847 = phi_1621_;
+                            phi_1626_ = _e847;
                             if _e847 {
                                 break;
                             }
@@ -1400,7 +1400,7 @@ fn function_() {
                             let _e852 = local_5;
                             if (_e851 < _e852) {
                             } else {
-                                phi_1596_ = true;
+                                phi_1626_ = true;
                                 break;
                             }
                             let _e854 = local_81;
@@ -1410,66 +1410,66 @@ fn function_() {
                             if (_e857 <= _e858) {
                                 let _e863 = local_78;
                                 let _e864 = local_82;
-                                phi_871_ = type_20(1u, type_15(_e863, _e864));
+                                phi_891_ = type_20(1u, type_15(_e863, _e864));
                             } else {
-                                phi_871_ = type_20(0u, type_20().member_1);
+                                phi_891_ = type_20(0u, type_20().member_1);
                             }
-                            let _e868 = phi_871_;
+                            let _e868 = phi_891_;
                             local_83 = _e868;
                             if (bitcast<i32>(_e868.member) != 0i) {
                                 let _e872 = local_83;
                                 let _e875 = local_77;
-                                phi_880_ = (_e875 + _e872.member_1.member_1);
+                                phi_900_ = (_e875 + _e872.member_1.member_1);
                             } else {
-                                phi_880_ = _e801;
+                                phi_900_ = _e801;
                             }
-                            let _e878 = phi_880_;
-                            phi_1599_ = _e847;
-                            phi_881_ = _e878;
+                            let _e878 = phi_900_;
+                            phi_1629_ = _e847;
+                            phi_901_ = _e878;
                         } else {
-                            phi_1599_ = _e797;
-                            phi_881_ = _e801;
+                            phi_1629_ = _e797;
+                            phi_901_ = _e801;
                         }
-                        let _e880 = phi_1599_;
-                        let _e882 = phi_881_;
+                        let _e880 = phi_1629_;
+                        let _e882 = phi_901_;
                         let _e883 = local_76;
-                        phi_1598_ = _e880;
-                        phi_883_ = (_e883 + 1u);
-                        phi_884_ = _e882;
+                        phi_1628_ = _e880;
+                        phi_903_ = (_e883 + 1u);
+                        phi_904_ = _e882;
                     } else {
-                        phi_1598_ = _e797;
-                        phi_883_ = u32();
-                        phi_884_ = u32();
+                        phi_1628_ = _e797;
+                        phi_903_ = u32();
+                        phi_904_ = u32();
                     }
-                    let _e886 = phi_1598_;
-                    let _e888 = phi_883_;
-                    let _e890 = phi_884_;
-                    phi_1597_ = _e886;
-                    phi_768_ = _e888;
-                    phi_771_ = _e890;
-                    phi_885_ = _e810;
+                    let _e886 = phi_1628_;
+                    let _e888 = phi_903_;
+                    let _e890 = phi_904_;
+                    phi_1627_ = _e886;
+                    phi_788_ = _e888;
+                    phi_791_ = _e890;
+                    phi_905_ = _e810;
                 } else {
-                    phi_1597_ = _e797;
-                    phi_768_ = u32();
-                    phi_771_ = u32();
-                    phi_885_ = false;
+                    phi_1627_ = _e797;
+                    phi_788_ = u32();
+                    phi_791_ = u32();
+                    phi_905_ = false;
                 }
-                let _e892 = phi_1597_;
-                let _e894 = phi_768_;
-                let _e896 = phi_771_;
-                let _e898 = phi_885_;
+                let _e892 = phi_1627_;
+                let _e894 = phi_788_;
+                let _e896 = phi_791_;
+                let _e898 = phi_905_;
                 local_84 = _e898;
                 continue;
                 continuing {
                     let _e899 = local_84;
-                    phi_1595_ = _e892;
-                    phi_767_ = _e894;
-                    phi_770_ = _e896;
-                    phi_1596_ = _e892;
+                    phi_1624_ = _e892;
+                    phi_787_ = _e894;
+                    phi_790_ = _e896;
+                    phi_1626_ = _e892;
                     break if !(_e899);
                 }
             }
-            let _e902 = phi_1596_;
+            let _e902 = phi_1626_;
             if _e902 {
                 break;
             }
@@ -1493,34 +1493,34 @@ fn function_() {
                     local_85 = _e914;
                     if _e914 {
                         let _e915 = local_1;
-                        phi_912_ = type_15(1u, _e915);
+                        phi_932_ = type_15(1u, _e915);
                     } else {
-                        phi_912_ = type_15();
+                        phi_932_ = type_15();
                     }
-                    let _e918 = phi_912_;
+                    let _e918 = phi_932_;
                     let _e919 = local_85;
-                    phi_914_ = _e918;
-                    phi_915_ = select(true, false, _e919);
+                    phi_934_ = _e918;
+                    phi_935_ = select(true, false, _e919);
                 } else {
-                    phi_914_ = type_15();
-                    phi_915_ = true;
+                    phi_934_ = type_15();
+                    phi_935_ = true;
                 }
-                let _e922 = phi_914_;
-                let _e924 = phi_915_;
-                phi_916_ = _e922;
-                phi_917_ = _e924;
+                let _e922 = phi_934_;
+                let _e924 = phi_935_;
+                phi_936_ = _e922;
+                phi_937_ = _e924;
             } else {
-                phi_916_ = type_15();
-                phi_917_ = true;
+                phi_936_ = type_15();
+                phi_937_ = true;
             }
-            let _e926 = phi_916_;
-            let _e928 = phi_917_;
+            let _e926 = phi_936_;
+            let _e928 = phi_937_;
             if _e928 {
-                phi_922_ = type_15(0u, type_15().member_1);
+                phi_942_ = type_15(0u, type_15().member_1);
             } else {
-                phi_922_ = _e926;
+                phi_942_ = _e926;
             }
-            let _e933 = phi_922_;
+            let _e933 = phi_942_;
             local_86 = _e933.member_1;
             if (bitcast<i32>(_e933.member) != 0i) {
                 let _e987 = local_86;
@@ -1551,15 +1551,15 @@ fn function_() {
                 global_1[_e1005] = _e1007;
                 storageBarrier();
                 workgroupBarrier();
-                phi_954_ = 0u;
-                phi_957_ = 256u;
-                phi_958_ = 256u;
-                phi_960_ = 0u;
+                phi_979_ = 0u;
+                phi_982_ = 256u;
+                phi_983_ = 256u;
+                phi_985_ = 0u;
                 loop {
-                    let _e1009 = phi_954_;
-                    let _e1011 = phi_957_;
-                    let _e1013 = phi_958_;
-                    let _e1015 = phi_960_;
+                    let _e1009 = phi_979_;
+                    let _e1011 = phi_982_;
+                    let _e1013 = phi_983_;
+                    let _e1015 = phi_985_;
                     local_91 = _e1009;
                     local_92 = _e1011;
                     local_93 = _e1013;
@@ -1589,16 +1589,16 @@ fn function_() {
                             local_99 = _e1033;
                             if (_e1033 < 512u) {
                             } else {
-                                phi_1612_ = true;
+                                phi_1642_ = true;
                                 break;
                             }
                             let _e1035 = local_99;
                             let _e1037 = global_1[_e1035];
-                            phi_988_ = _e1037;
+                            phi_1013_ = _e1037;
                         } else {
-                            phi_988_ = 0u;
+                            phi_1013_ = 0u;
                         }
-                        let _e1039 = phi_988_;
+                        let _e1039 = phi_1013_;
                         let _e1040 = subgroupInclusiveAdd(_e1039);
                         local_100 = _e1040;
                         let _e1041 = local_98;
@@ -1609,7 +1609,7 @@ fn function_() {
                             local_101 = _e1044;
                             if (_e1044 < 512u) {
                             } else {
-                                phi_1612_ = true;
+                                phi_1642_ = true;
                                 break;
                             }
                             let _e1046 = local_101;
@@ -1621,42 +1621,42 @@ fn function_() {
                         let _e1049 = local_91;
                         let _e1050 = local_97;
                         let _e1052 = local_94;
-                        phi_955_ = (_e1049 + _e1050);
-                        phi_959_ = _e1023;
-                        phi_961_ = (_e1052 + 1u);
+                        phi_980_ = (_e1049 + _e1050);
+                        phi_984_ = _e1023;
+                        phi_986_ = (_e1052 + 1u);
                     } else {
-                        phi_955_ = u32();
-                        phi_959_ = u32();
-                        phi_961_ = u32();
+                        phi_980_ = u32();
+                        phi_984_ = u32();
+                        phi_986_ = u32();
                     }
-                    let _e1055 = phi_955_;
-                    let _e1057 = phi_959_;
-                    let _e1059 = phi_961_;
+                    let _e1055 = phi_980_;
+                    let _e1057 = phi_984_;
+                    let _e1059 = phi_986_;
                     continue;
                     continuing {
                         let _e1060 = local_95;
-                        phi_954_ = _e1055;
-                        phi_957_ = _e1009;
-                        phi_958_ = _e1057;
-                        phi_960_ = _e1059;
-                        phi_1612_ = _e902;
+                        phi_979_ = _e1055;
+                        phi_982_ = _e1009;
+                        phi_983_ = _e1057;
+                        phi_985_ = _e1059;
+                        phi_1642_ = _e902;
                         break if !(_e1060);
                     }
                 }
-                let _e1063 = phi_1612_;
+                let _e1063 = phi_1642_;
                 if _e1063 {
                     break;
                 }
                 let _e1578 = local_153;
-                phi_1005_ = _e1578;
+                phi_1035_ = _e1578;
                 let _e1581 = local_154;
-                phi_1008_ = _e1581;
+                phi_1038_ = _e1581;
                 let _e1584 = local_155;
-                phi_1010_ = _e1584;
+                phi_1040_ = _e1584;
                 loop {
-                    let _e1065 = phi_1005_;
-                    let _e1067 = phi_1008_;
-                    let _e1069 = phi_1010_;
+                    let _e1065 = phi_1035_;
+                    let _e1067 = phi_1038_;
+                    let _e1069 = phi_1040_;
                     local_102 = _e1065;
                     local_103 = _e1067;
                     local_104 = _e1069;
@@ -1672,13 +1672,13 @@ fn function_() {
                         local_107 = _e1076;
                         let _e1077 = local_104;
                         if (_e1077 == 1u) {
-                            phi_1025_ = 256u;
+                            phi_1055_ = 256u;
                         } else {
                             let _e1079 = local_102;
                             let _e1080 = local_107;
-                            phi_1025_ = (_e1079 - _e1080);
+                            phi_1055_ = (_e1079 - _e1080);
                         }
-                        let _e1083 = phi_1025_;
+                        let _e1083 = phi_1055_;
                         local_108 = _e1083;
                         let _e1084 = local;
                         let _e1085 = local_86;
@@ -1696,7 +1696,7 @@ fn function_() {
                                 local_110 = _e1099;
                                 if (_e1099 < 512u) {
                                 } else {
-                                    phi_1617_ = true;
+                                    phi_1647_ = true;
                                     break;
                                 }
                                 let _e1101 = local_110;
@@ -1707,7 +1707,7 @@ fn function_() {
                                 local_112 = _e1105;
                                 if _e1105 {
                                 } else {
-                                    phi_1617_ = true;
+                                    phi_1647_ = true;
                                     break;
                                 }
                                 let _e1106 = local_109;
@@ -1717,7 +1717,7 @@ fn function_() {
                                 let _e1111 = local_112;
                                 if _e1111 {
                                 } else {
-                                    phi_1617_ = true;
+                                    phi_1647_ = true;
                                     break;
                                 }
                                 let _e1112 = local_113;
@@ -1727,39 +1727,39 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e1113 = local_104;
-                        phi_1006_ = _e1083;
-                        phi_1009_ = _e1076;
-                        phi_1011_ = (_e1113 - 1u);
+                        phi_1036_ = _e1083;
+                        phi_1039_ = _e1076;
+                        phi_1041_ = (_e1113 - 1u);
                     } else {
-                        phi_1006_ = u32();
-                        phi_1009_ = u32();
-                        phi_1011_ = u32();
+                        phi_1036_ = u32();
+                        phi_1039_ = u32();
+                        phi_1041_ = u32();
                     }
-                    let _e1116 = phi_1006_;
-                    let _e1118 = phi_1009_;
-                    let _e1120 = phi_1011_;
+                    let _e1116 = phi_1036_;
+                    let _e1118 = phi_1039_;
+                    let _e1120 = phi_1041_;
                     continue;
                     continuing {
                         let _e1121 = local_105;
-                        phi_1005_ = _e1116;
-                        phi_1008_ = _e1118;
-                        phi_1010_ = _e1120;
-                        phi_1617_ = _e1063;
+                        phi_1035_ = _e1116;
+                        phi_1038_ = _e1118;
+                        phi_1040_ = _e1120;
+                        phi_1647_ = _e1063;
                         break if !(_e1121);
                     }
                 }
-                let _e1124 = phi_1617_;
+                let _e1124 = phi_1647_;
                 if _e1124 {
                     break;
                 }
-                phi_1630_ = _e1124;
-                phi_1116_ = 256u;
+                phi_1659_ = _e1124;
+                phi_1146_ = 256u;
             } else {
-                phi_1062_ = 1u;
-                phi_1065_ = 0u;
+                phi_1092_ = 1u;
+                phi_1095_ = 0u;
                 loop {
-                    let _e939 = phi_1062_;
-                    let _e941 = phi_1065_;
+                    let _e939 = phi_1092_;
+                    let _e941 = phi_1095_;
                     local_114 = _e939;
                     local_115 = _e941;
                     local_156 = _e941;
@@ -1776,7 +1776,7 @@ fn function_() {
                         local_117 = _e949;
                         if (_e949 < 512u) {
                         } else {
-                            phi_1602_ = true;
+                            phi_1632_ = true;
                             break;
                         }
                         let _e951 = local_117;
@@ -1792,17 +1792,17 @@ fn function_() {
                             local_119 = _e961;
                             if (_e961 < 512u) {
                             } else {
-                                phi_1602_ = true;
+                                phi_1632_ = true;
                                 break;
                             }
                             let _e963 = local_119;
                             let _e965 = global_1[_e963];
                             let _e966 = local_118;
-                            phi_1101_ = (_e965 + _e966);
+                            phi_1131_ = (_e965 + _e966);
                         } else {
-                            phi_1101_ = _e953;
+                            phi_1131_ = _e953;
                         }
-                        let _e969 = phi_1101_;
+                        let _e969 = phi_1131_;
                         local_120 = _e969;
                         let _e970 = local_152;
                         let _e971 = local;
@@ -1810,7 +1810,7 @@ fn function_() {
                         local_121 = _e972;
                         if (_e972 < 512u) {
                         } else {
-                            phi_1602_ = true;
+                            phi_1632_ = true;
                             break;
                         }
                         let _e974 = local_121;
@@ -1819,37 +1819,37 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e977 = local_114;
-                        phi_1063_ = (_e977 * 2u);
-                        phi_1066_ = _e946;
+                        phi_1093_ = (_e977 * 2u);
+                        phi_1096_ = _e946;
                     } else {
-                        phi_1063_ = u32();
-                        phi_1066_ = u32();
+                        phi_1093_ = u32();
+                        phi_1096_ = u32();
                     }
-                    let _e980 = phi_1063_;
-                    let _e982 = phi_1066_;
+                    let _e980 = phi_1093_;
+                    let _e982 = phi_1096_;
                     continue;
                     continuing {
                         let _e983 = local_116;
-                        phi_1062_ = _e980;
-                        phi_1065_ = _e982;
-                        phi_1602_ = _e902;
+                        phi_1092_ = _e980;
+                        phi_1095_ = _e982;
+                        phi_1632_ = _e902;
                         break if !(_e983);
                     }
                 }
-                let _e986 = phi_1602_;
+                let _e986 = phi_1632_;
                 if _e986 {
                     break;
                 }
-                phi_1630_ = _e986;
+                phi_1659_ = _e986;
                 let _e1593 = local_156;
-                phi_1116_ = _e1593;
+                phi_1146_ = _e1593;
             }
-            let _e1126 = phi_1630_;
-            let _e1128 = phi_1116_;
+            let _e1126 = phi_1659_;
+            let _e1128 = phi_1146_;
             local_122 = _e1128;
             let _e1129 = local;
             if (_e1129 == 0u) {
-                phi_1130_ = 0u;
+                phi_1160_ = 0u;
             } else {
                 let _e1131 = local_122;
                 let _e1132 = local;
@@ -1861,28 +1861,28 @@ fn function_() {
                 }
                 let _e1136 = local_123;
                 let _e1138 = global_1[_e1136];
-                phi_1130_ = _e1138;
+                phi_1160_ = _e1138;
             }
-            let _e1140 = phi_1130_;
-            phi_1628_ = _e1126;
-            phi_1134_ = _e1140;
-            phi_1137_ = type_20();
-            phi_1139_ = _e224;
-            phi_1141_ = 0u;
-            phi_1143_ = 0u;
-            phi_1145_ = 0u;
-            phi_1147_ = 0u;
-            phi_1149_ = 0u;
+            let _e1140 = phi_1160_;
+            phi_1657_ = _e1126;
+            phi_1164_ = _e1140;
+            phi_1167_ = type_20();
+            phi_1169_ = _e224;
+            phi_1171_ = 0u;
+            phi_1173_ = 0u;
+            phi_1175_ = 0u;
+            phi_1177_ = 0u;
+            phi_1179_ = 0u;
             loop {
-                let _e1142 = phi_1628_;
-                let _e1144 = phi_1134_;
-                let _e1146 = phi_1137_;
-                let _e1148 = phi_1139_;
-                let _e1150 = phi_1141_;
-                let _e1152 = phi_1143_;
-                let _e1154 = phi_1145_;
-                let _e1156 = phi_1147_;
-                let _e1158 = phi_1149_;
+                let _e1142 = phi_1657_;
+                let _e1144 = phi_1164_;
+                let _e1146 = phi_1167_;
+                let _e1148 = phi_1169_;
+                let _e1150 = phi_1171_;
+                let _e1152 = phi_1173_;
+                let _e1154 = phi_1175_;
+                let _e1156 = phi_1177_;
+                let _e1158 = phi_1179_;
                 local_124 = _e1144;
                 local_125 = _e1146;
                 local_126 = _e1148;
@@ -1905,7 +1905,7 @@ fn function_() {
                         let _e1170 = local_5;
                         if (_e1169 < _e1170) {
                         } else {
-                            phi_1631_ = true;
+                            phi_1661_ = true;
                             break;
                         }
                         let _e1172 = local_132;
@@ -1919,15 +1919,15 @@ fn function_() {
                         local_134 = _e1182;
                         if _e1182 {
                         } else {
-                            phi_1631_ = true;
+                            phi_1661_ = true;
                             break;
                         }
                         let _e1183 = local_126;
                         let _e1186 = global_9.member[_e1183];
                         if ((_e1186 & 1u) == 0u) {
-                            phi_1207_ = 0u;
+                            phi_1237_ = 0u;
                             loop {
-                                let _e1194 = phi_1207_;
+                                let _e1194 = phi_1237_;
                                 local_135 = _e1194;
                                 let _e1195 = local_135;
                                 if (_e1195 < 4u) {
@@ -1938,7 +1938,7 @@ fn function_() {
                                     let _e1200 = local_5;
                                     if (_e1199 < _e1200) {
                                     } else {
-                                        phi_1623_ = true;
+                                        phi_1653_ = true;
                                         break;
                                     }
                                     let _e1202 = local_136;
@@ -1947,30 +1947,30 @@ fn function_() {
                                     let _e1207 = (_e1205 > _e1206);
                                     if _e1207 {
                                         let _e1208 = local_135;
-                                        phi_1238_ = (_e1208 + 1u);
+                                        phi_1268_ = (_e1208 + 1u);
                                     } else {
-                                        phi_1238_ = u32();
+                                        phi_1268_ = u32();
                                     }
-                                    let _e1211 = phi_1238_;
-                                    phi_1208_ = _e1211;
-                                    phi_1239_ = _e1207;
+                                    let _e1211 = phi_1268_;
+                                    phi_1238_ = _e1211;
+                                    phi_1269_ = _e1207;
                                 } else {
-                                    phi_1208_ = u32();
-                                    phi_1239_ = false;
+                                    phi_1238_ = u32();
+                                    phi_1269_ = false;
                                 }
-                                let _e1213 = phi_1208_;
-                                let _e1215 = phi_1239_;
+                                let _e1213 = phi_1238_;
+                                let _e1215 = phi_1269_;
                                 local_137 = _e1215;
                                 continue;
                                 continuing {
                                     let _e1216 = local_137;
-                                    phi_1207_ = _e1213;
-                                    phi_1623_ = _e1142;
+                                    phi_1237_ = _e1213;
+                                    phi_1653_ = _e1142;
                                     break if !(_e1216);
                                 }
                             }
-                            let _e1219 = phi_1623_;
-                            phi_1631_ = _e1219;
+                            let _e1219 = phi_1653_;
+                            phi_1661_ = _e1219;
                             if _e1219 {
                                 break;
                             }
@@ -1981,7 +1981,7 @@ fn function_() {
                             let _e1223 = local_5;
                             if (_e1222 < _e1223) {
                             } else {
-                                phi_1631_ = true;
+                                phi_1661_ = true;
                                 break;
                             }
                             let _e1225 = local_138;
@@ -1991,20 +1991,20 @@ fn function_() {
                             if (_e1228 <= _e1229) {
                                 let _e1234 = local_135;
                                 let _e1235 = local_139;
-                                phi_1271_ = type_20(1u, type_15(_e1234, _e1235));
+                                phi_1301_ = type_20(1u, type_15(_e1234, _e1235));
                             } else {
-                                phi_1271_ = type_20(0u, type_20().member_1);
+                                phi_1301_ = type_20(0u, type_20().member_1);
                             }
-                            let _e1239 = phi_1271_;
-                            phi_1639_ = _e1219;
-                            phi_1273_ = _e1239;
+                            let _e1239 = phi_1301_;
+                            phi_1667_ = _e1219;
+                            phi_1303_ = _e1239;
                         } else {
                             let _e1189 = local_125;
-                            phi_1639_ = _e1142;
-                            phi_1273_ = type_20(0u, _e1189.member_1);
+                            phi_1667_ = _e1142;
+                            phi_1303_ = type_20(0u, _e1189.member_1);
                         }
-                        let _e1241 = phi_1639_;
-                        let _e1243 = phi_1273_;
+                        let _e1241 = phi_1667_;
+                        let _e1243 = phi_1303_;
                         local_140 = _e1243;
                         if (bitcast<i32>(_e1243.member) != 0i) {
                             let _e1250 = local_140;
@@ -2015,16 +2015,16 @@ fn function_() {
                             let _e1259 = local_42;
                             if (_e1250.member_1.member_1 <= (_e1259 - select(_e1257, _e1256, (_e1253 < _e1254)))) {
                                 let _e1265 = local_140;
-                                phi_1300_ = type_20(1u, _e1265.member_1);
+                                phi_1330_ = type_20(1u, _e1265.member_1);
                             } else {
-                                phi_1300_ = type_20(0u, type_20().member_1);
+                                phi_1330_ = type_20(0u, type_20().member_1);
                             }
-                            let _e1269 = phi_1300_;
-                            phi_1302_ = _e1269;
+                            let _e1269 = phi_1330_;
+                            phi_1332_ = _e1269;
                         } else {
-                            phi_1302_ = type_20(0u, type_20().member_1);
+                            phi_1332_ = type_20(0u, type_20().member_1);
                         }
-                        let _e1271 = phi_1302_;
+                        let _e1271 = phi_1332_;
                         local_141 = _e1271;
                         if (bitcast<i32>(_e1271.member) != 0i) {
                             let _e1301 = local_141;
@@ -2037,7 +2037,7 @@ fn function_() {
                             let _e1309 = local_7;
                             if (_e1308 < _e1309) {
                             } else {
-                                phi_1631_ = true;
+                                phi_1661_ = true;
                                 break;
                             }
                             let _e1311 = local_144;
@@ -2049,7 +2049,7 @@ fn function_() {
                             let _e1317 = local_7;
                             if (_e1316 < _e1317) {
                             } else {
-                                phi_1631_ = true;
+                                phi_1661_ = true;
                                 break;
                             }
                             let _e1319 = local_145;
@@ -2060,7 +2060,7 @@ fn function_() {
                             let _e1326 = local_134;
                             if _e1326 {
                             } else {
-                                phi_1631_ = true;
+                                phi_1661_ = true;
                                 break;
                             }
                             let _e1327 = local_146;
@@ -2071,21 +2071,21 @@ fn function_() {
                                 let _e1332 = local_133;
                                 let _e1333 = local_143;
                                 let _e1335 = local_130;
-                                phi_1348_ = (_e1335 + (_e1332 - _e1333));
-                                phi_1349_ = (_e1330 + 1u);
+                                phi_1378_ = (_e1335 + (_e1332 - _e1333));
+                                phi_1379_ = (_e1330 + 1u);
                             } else {
-                                phi_1348_ = _e1156;
-                                phi_1349_ = _e1158;
+                                phi_1378_ = _e1156;
+                                phi_1379_ = _e1158;
                             }
-                            let _e1338 = phi_1348_;
-                            let _e1340 = phi_1349_;
+                            let _e1338 = phi_1378_;
+                            let _e1340 = phi_1379_;
                             let _e1341 = local_124;
                             let _e1342 = local_143;
-                            phi_1388_ = (_e1341 + _e1342);
-                            phi_1389_ = _e1152;
-                            phi_1390_ = _e1154;
-                            phi_1391_ = _e1338;
-                            phi_1392_ = _e1340;
+                            phi_1418_ = (_e1341 + _e1342);
+                            phi_1419_ = _e1152;
+                            phi_1420_ = _e1154;
+                            phi_1421_ = _e1338;
+                            phi_1422_ = _e1340;
                         } else {
                             let _e1275 = local_126;
                             let _e1276 = (2u * _e1275);
@@ -2093,7 +2093,7 @@ fn function_() {
                             let _e1277 = local_7;
                             if (_e1276 < _e1277) {
                             } else {
-                                phi_1631_ = true;
+                                phi_1661_ = true;
                                 break;
                             }
                             let _e1279 = local_147;
@@ -2104,7 +2104,7 @@ fn function_() {
                             let _e1284 = local_7;
                             if (_e1283 < _e1284) {
                             } else {
-                                phi_1631_ = true;
+                                phi_1661_ = true;
                                 break;
                             }
                             let _e1286 = local_148;
@@ -2114,112 +2114,112 @@ fn function_() {
                                 let _e1291 = local_134;
                                 if _e1291 {
                                 } else {
-                                    phi_1631_ = true;
+                                    phi_1661_ = true;
                                     break;
                                 }
                                 global_9.member[_e1183] = 1u;
                                 let _e1292 = local_129;
                                 let _e1294 = local_128;
                                 let _e1295 = local_133;
-                                phi_1386_ = (_e1294 + _e1295);
-                                phi_1387_ = (_e1292 + 1u);
+                                phi_1416_ = (_e1294 + _e1295);
+                                phi_1417_ = (_e1292 + 1u);
                             } else {
-                                phi_1386_ = _e1152;
-                                phi_1387_ = _e1154;
+                                phi_1416_ = _e1152;
+                                phi_1417_ = _e1154;
                             }
-                            let _e1298 = phi_1386_;
-                            let _e1300 = phi_1387_;
-                            phi_1388_ = _e1144;
-                            phi_1389_ = _e1298;
-                            phi_1390_ = _e1300;
-                            phi_1391_ = _e1156;
-                            phi_1392_ = _e1158;
+                            let _e1298 = phi_1416_;
+                            let _e1300 = phi_1417_;
+                            phi_1418_ = _e1144;
+                            phi_1419_ = _e1298;
+                            phi_1420_ = _e1300;
+                            phi_1421_ = _e1156;
+                            phi_1422_ = _e1158;
                         }
-                        let _e1345 = phi_1388_;
-                        let _e1347 = phi_1389_;
-                        let _e1349 = phi_1390_;
-                        let _e1351 = phi_1391_;
-                        let _e1353 = phi_1392_;
+                        let _e1345 = phi_1418_;
+                        let _e1347 = phi_1419_;
+                        let _e1349 = phi_1420_;
+                        let _e1351 = phi_1421_;
+                        let _e1353 = phi_1422_;
                         let _e1354 = local_126;
-                        phi_1633_ = _e1241;
-                        phi_1394_ = _e1345;
-                        phi_1395_ = _e1243;
-                        phi_1396_ = (_e1354 + 1u);
-                        phi_1397_ = select(_e1178, _e1175, (_e1175 > _e1176));
-                        phi_1398_ = _e1347;
-                        phi_1399_ = _e1349;
-                        phi_1400_ = _e1351;
-                        phi_1401_ = _e1353;
+                        phi_1663_ = _e1241;
+                        phi_1424_ = _e1345;
+                        phi_1425_ = _e1243;
+                        phi_1426_ = (_e1354 + 1u);
+                        phi_1427_ = select(_e1178, _e1175, (_e1175 > _e1176));
+                        phi_1428_ = _e1347;
+                        phi_1429_ = _e1349;
+                        phi_1430_ = _e1351;
+                        phi_1431_ = _e1353;
                     } else {
-                        phi_1633_ = _e1142;
-                        phi_1394_ = u32();
-                        phi_1395_ = type_20();
-                        phi_1396_ = u32();
-                        phi_1397_ = u32();
-                        phi_1398_ = u32();
-                        phi_1399_ = u32();
-                        phi_1400_ = u32();
-                        phi_1401_ = u32();
+                        phi_1663_ = _e1142;
+                        phi_1424_ = u32();
+                        phi_1425_ = type_20();
+                        phi_1426_ = u32();
+                        phi_1427_ = u32();
+                        phi_1428_ = u32();
+                        phi_1429_ = u32();
+                        phi_1430_ = u32();
+                        phi_1431_ = u32();
                     }
-                    let _e1357 = phi_1633_;
-                    let _e1359 = phi_1394_;
-                    let _e1361 = phi_1395_;
-                    let _e1363 = phi_1396_;
-                    let _e1365 = phi_1397_;
-                    let _e1367 = phi_1398_;
-                    let _e1369 = phi_1399_;
-                    let _e1371 = phi_1400_;
-                    let _e1373 = phi_1401_;
-                    phi_1632_ = _e1357;
-                    phi_1135_ = _e1359;
-                    phi_1138_ = _e1361;
-                    phi_1140_ = _e1363;
-                    phi_1142_ = _e1365;
-                    phi_1144_ = _e1367;
-                    phi_1146_ = _e1369;
-                    phi_1148_ = _e1371;
-                    phi_1150_ = _e1373;
-                    phi_1402_ = _e1167;
+                    let _e1357 = phi_1663_;
+                    let _e1359 = phi_1424_;
+                    let _e1361 = phi_1425_;
+                    let _e1363 = phi_1426_;
+                    let _e1365 = phi_1427_;
+                    let _e1367 = phi_1428_;
+                    let _e1369 = phi_1429_;
+                    let _e1371 = phi_1430_;
+                    let _e1373 = phi_1431_;
+                    phi_1662_ = _e1357;
+                    phi_1165_ = _e1359;
+                    phi_1168_ = _e1361;
+                    phi_1170_ = _e1363;
+                    phi_1172_ = _e1365;
+                    phi_1174_ = _e1367;
+                    phi_1176_ = _e1369;
+                    phi_1178_ = _e1371;
+                    phi_1180_ = _e1373;
+                    phi_1432_ = _e1167;
                 } else {
-                    phi_1632_ = _e1142;
-                    phi_1135_ = u32();
-                    phi_1138_ = type_20();
-                    phi_1140_ = u32();
-                    phi_1142_ = u32();
-                    phi_1144_ = u32();
-                    phi_1146_ = u32();
-                    phi_1148_ = u32();
-                    phi_1150_ = u32();
-                    phi_1402_ = false;
+                    phi_1662_ = _e1142;
+                    phi_1165_ = u32();
+                    phi_1168_ = type_20();
+                    phi_1170_ = u32();
+                    phi_1172_ = u32();
+                    phi_1174_ = u32();
+                    phi_1176_ = u32();
+                    phi_1178_ = u32();
+                    phi_1180_ = u32();
+                    phi_1432_ = false;
                 }
-                let _e1375 = phi_1632_;
-                let _e1377 = phi_1135_;
-                let _e1379 = phi_1138_;
-                let _e1381 = phi_1140_;
-                let _e1383 = phi_1142_;
-                let _e1385 = phi_1144_;
-                let _e1387 = phi_1146_;
-                let _e1389 = phi_1148_;
-                let _e1391 = phi_1150_;
-                let _e1393 = phi_1402_;
+                let _e1375 = phi_1662_;
+                let _e1377 = phi_1165_;
+                let _e1379 = phi_1168_;
+                let _e1381 = phi_1170_;
+                let _e1383 = phi_1172_;
+                let _e1385 = phi_1174_;
+                let _e1387 = phi_1176_;
+                let _e1389 = phi_1178_;
+                let _e1391 = phi_1180_;
+                let _e1393 = phi_1432_;
                 local_149 = _e1393;
                 continue;
                 continuing {
                     let _e1394 = local_149;
-                    phi_1628_ = _e1375;
-                    phi_1134_ = _e1377;
-                    phi_1137_ = _e1379;
-                    phi_1139_ = _e1381;
-                    phi_1141_ = _e1383;
-                    phi_1143_ = _e1385;
-                    phi_1145_ = _e1387;
-                    phi_1147_ = _e1389;
-                    phi_1149_ = _e1391;
-                    phi_1631_ = _e1375;
+                    phi_1657_ = _e1375;
+                    phi_1164_ = _e1377;
+                    phi_1167_ = _e1379;
+                    phi_1169_ = _e1381;
+                    phi_1171_ = _e1383;
+                    phi_1173_ = _e1385;
+                    phi_1175_ = _e1387;
+                    phi_1177_ = _e1389;
+                    phi_1179_ = _e1391;
+                    phi_1661_ = _e1375;
                     break if !(_e1394);
                 }
             }
-            let _e1397 = phi_1631_;
+            let _e1397 = phi_1661_;
             if _e1397 {
                 break;
             }

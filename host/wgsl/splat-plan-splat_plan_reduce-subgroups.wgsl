@@ -130,7 +130,7 @@ fn function_() {
     var local_55: u32;
     var local_56: bool;
     var local_57: u32;
-    var phi_641_: bool;
+    var phi_687_: bool;
     var phi_111_: u32;
     var phi_114_: f32;
     var phi_139_: u32;
@@ -155,31 +155,31 @@ fn function_() {
     var phi_143_: bool;
     var phi_145_: f32;
     var phi_147_: f32;
-    var phi_627_: bool;
+    var phi_683_: bool;
     var phi_346_: bool;
     var phi_347_: bool;
     var phi_429_: f32;
-    var phi_648_: bool;
+    var phi_704_: bool;
     var phi_112_: u32;
     var phi_115_: f32;
-    var phi_647_: bool;
+    var phi_703_: bool;
     var phi_454_: type_18;
     var phi_456_: type_18;
     var phi_457_: bool;
     var phi_458_: type_18;
     var phi_459_: bool;
     var phi_464_: type_18;
-    var phi_551_: u32;
-    var phi_552_: u32;
-    var phi_659_: bool;
+    var phi_607_: u32;
+    var phi_608_: u32;
+    var phi_715_: bool;
     var phi_476_: u32;
     var phi_479_: u32;
     var phi_503_: u32;
     var phi_477_: u32;
     var phi_480_: u32;
-    var phi_668_: bool;
-    var phi_546_: u32;
-    var phi_599_: u32;
+    var phi_724_: bool;
+    var phi_574_: u32;
+    var phi_655_: u32;
     var local_58: f32;
 
     let _e99 = global_12;
@@ -204,11 +204,11 @@ fn function_() {
             let _e122 = global_9.member.member_1;
             local_8 = (_e119 * _e122);
             local_9 = (_e104.x * 256u);
-            phi_641_ = false;
+            phi_687_ = false;
             phi_111_ = ((_e103.x * 256u) + _e102);
             phi_114_ = 0f;
             loop {
-                let _e128 = phi_641_;
+                let _e128 = phi_687_;
                 let _e130 = phi_111_;
                 let _e132 = phi_114_;
                 local_10 = _e130;
@@ -222,7 +222,7 @@ fn function_() {
                     let _e137 = local_6;
                     if (_e136 < _e137) {
                     } else {
-                        phi_647_ = true;
+                        phi_703_ = true;
                         break;
                     }
                     let _e139 = local_10;
@@ -257,7 +257,7 @@ fn function_() {
                             let _e165 = local_5;
                             if (_e164 < _e165) {
                             } else {
-                                phi_627_ = true;
+                                phi_683_ = true;
                                 break;
                             }
                             let _e167 = local_19;
@@ -269,7 +269,7 @@ fn function_() {
                             let _e174 = local_5;
                             if (_e173 < _e174) {
                             } else {
-                                phi_627_ = true;
+                                phi_683_ = true;
                                 break;
                             }
                             let _e176 = local_21;
@@ -281,7 +281,7 @@ fn function_() {
                             let _e183 = local_5;
                             if (_e182 < _e183) {
                             } else {
-                                phi_627_ = true;
+                                phi_683_ = true;
                                 break;
                             }
                             let _e185 = local_23;
@@ -293,7 +293,7 @@ fn function_() {
                             let _e192 = local_5;
                             if (_e191 < _e192) {
                             } else {
-                                phi_627_ = true;
+                                phi_683_ = true;
                                 break;
                             }
                             let _e194 = local_25;
@@ -305,7 +305,7 @@ fn function_() {
                             let _e201 = local_5;
                             if (_e200 < _e201) {
                             } else {
-                                phi_627_ = true;
+                                phi_683_ = true;
                                 break;
                             }
                             let _e203 = local_27;
@@ -450,12 +450,12 @@ fn function_() {
                             phi_142_ = _e342;
                             phi_144_ = _e344;
                             phi_146_ = _e346;
-                            phi_627_ = _e128;
+                            phi_683_ = _e128;
                             break if !(_e347);
                         }
                     }
-                    let _e350 = phi_627_;
-                    phi_647_ = _e350;
+                    let _e350 = phi_683_;
+                    phi_703_ = _e350;
                     if _e350 {
                         break;
                     }
@@ -491,28 +491,28 @@ fn function_() {
                     let _e391 = phi_429_;
                     let _e392 = local_10;
                     let _e393 = local_9;
-                    phi_648_ = _e350;
+                    phi_704_ = _e350;
                     phi_112_ = (_e392 + _e393);
                     phi_115_ = _e391;
                 } else {
-                    phi_648_ = _e128;
+                    phi_704_ = _e128;
                     phi_112_ = u32();
                     phi_115_ = f32();
                 }
-                let _e396 = phi_648_;
+                let _e396 = phi_704_;
                 let _e398 = phi_112_;
                 let _e400 = phi_115_;
                 continue;
                 continuing {
                     let _e401 = local_12;
-                    phi_641_ = _e396;
+                    phi_687_ = _e396;
                     phi_111_ = _e398;
                     phi_114_ = _e400;
-                    phi_647_ = _e396;
+                    phi_703_ = _e396;
                     break if !(_e401);
                 }
             }
-            let _e404 = phi_647_;
+            let _e404 = phi_703_;
             if _e404 {
                 break;
             }
@@ -601,7 +601,7 @@ fn function_() {
                             local_45 = _e501;
                             if (_e501 < 512u) {
                             } else {
-                                phi_668_ = true;
+                                phi_724_ = true;
                                 break;
                             }
                             let _e503 = local_45;
@@ -624,7 +624,7 @@ fn function_() {
                                 local_47 = _e519;
                                 if (_e519 < 512u) {
                                 } else {
-                                    phi_668_ = true;
+                                    phi_724_ = true;
                                     break;
                                 }
                                 let _e521 = local_47;
@@ -651,11 +651,11 @@ fn function_() {
                         let _e536 = local_42;
                         phi_476_ = _e533;
                         phi_479_ = _e535;
-                        phi_668_ = _e404;
+                        phi_724_ = _e404;
                         break if !(_e536);
                     }
                 }
-                let _e539 = phi_668_;
+                let _e539 = phi_724_;
                 if _e539 {
                     break;
                 }
@@ -677,19 +677,19 @@ fn function_() {
                     }
                     let _e556 = local_49;
                     let _e558 = global_3[_e556];
-                    phi_546_ = _e558;
+                    phi_574_ = _e558;
                 } else {
-                    phi_546_ = 0u;
+                    phi_574_ = 0u;
                 }
-                let _e560 = phi_546_;
+                let _e560 = phi_574_;
                 let _e561 = subgroupMax(_e560);
                 storageBarrier();
                 workgroupBarrier();
-                phi_599_ = _e561;
+                phi_655_ = _e561;
             } else {
-                phi_551_ = 128u;
+                phi_607_ = 128u;
                 loop {
-                    let _e447 = phi_551_;
+                    let _e447 = phi_607_;
                     local_50 = _e447;
                     let _e448 = local_50;
                     let _e449 = (_e448 > 0u);
@@ -701,7 +701,7 @@ fn function_() {
                             let _e453 = local_36;
                             if _e453 {
                             } else {
-                                phi_659_ = true;
+                                phi_715_ = true;
                                 break;
                             }
                             let _e454 = global_3[_e409];
@@ -712,7 +712,7 @@ fn function_() {
                             local_53 = _e457;
                             if (_e457 < 512u) {
                             } else {
-                                phi_659_ = true;
+                                phi_715_ = true;
                                 break;
                             }
                             let _e459 = local_53;
@@ -723,7 +723,7 @@ fn function_() {
                             let _e466 = local_36;
                             if _e466 {
                             } else {
-                                phi_659_ = true;
+                                phi_715_ = true;
                                 break;
                             }
                             let _e467 = local_57;
@@ -732,29 +732,29 @@ fn function_() {
                         storageBarrier();
                         workgroupBarrier();
                         let _e468 = local_50;
-                        phi_552_ = (_e468 / 2u);
+                        phi_608_ = (_e468 / 2u);
                     } else {
-                        phi_552_ = u32();
+                        phi_608_ = u32();
                     }
-                    let _e471 = phi_552_;
+                    let _e471 = phi_608_;
                     continue;
                     continuing {
                         let _e472 = local_51;
-                        phi_551_ = _e471;
-                        phi_659_ = _e404;
+                        phi_607_ = _e471;
+                        phi_715_ = _e404;
                         break if !(_e472);
                     }
                 }
-                let _e475 = phi_659_;
+                let _e475 = phi_715_;
                 if _e475 {
                     break;
                 }
                 let _e477 = global_3[0u];
                 storageBarrier();
                 workgroupBarrier();
-                phi_599_ = _e477;
+                phi_655_ = _e477;
             }
-            let _e563 = phi_599_;
+            let _e563 = phi_655_;
             local_54 = _e563;
             let _e564 = local;
             if (_e564 == 0u) {

@@ -30,25 +30,26 @@ pub trait Group {
     fn invocations(&self) -> core::ops::Range<u32>;
 
     /// The subgroup size `s` when this workgroup runs as whole subgroups of `s` invocations that
-    /// [`Group::each_scanned`] and [`Group::each_reduced`] combine words across (`s` a power of two,
-    /// at least 2, the same for every invocation); `None` in a kernel built without subgroup
-    /// operations, or where the subgroups are not whole. Uniform, so code may branch on it.
+    /// [`Group::each_combined`] combines words across (`s` a power of two, at least 2, the same
+    /// for every invocation); `None` in a kernel built without subgroup operations, or where the
+    /// subgroups are not whole. Uniform, so code may branch on it.
     #[inline]
     fn subgroup_size(&self) -> Option<u32> {
         None
     }
 
     /// Like [`Group::each`] over positions instead of local ids: `input(p)` for every position
-    /// `p < size`, then `output(p, x)` (both given `data`, which they share), `x` the inclusive
-    /// scan under `op` of the inputs of `p`'s subgroup up to `p`, then a barrier. Subgroup `k`
-    /// holds positions `k·s .. (k+1)·s` (`s` as [`Group::subgroup_size`]); which invocation runs
-    /// which position is the backend's (on the GPU it need not be the local id), so `input` may
-    /// read nothing that another position's `output` writes in the same step. Without subgroups
-    /// every position is its own subgroup.
+    /// `p < size`, then `output(p, x)` (both given `data`, which they share), `x` the `combine`
+    /// under `op` of the inputs of `p`'s subgroup, then a barrier. Subgroup `k` holds positions
+    /// `k·s .. (k+1)·s` (`s` as [`Group::subgroup_size`]); which invocation runs which position is
+    /// the backend's (on the GPU it need not be the local id), so `input` may read nothing that
+    /// another position's `output` writes in the same step. Without subgroups every position is
+    /// its own subgroup.
     #[inline]
-    fn each_scanned<O: WordOp, D: ?Sized>(
+    fn each_combined<O: WordOp, D: ?Sized>(
         &mut self,
         _op: O,
+        _combine: Combine,
         data: &mut D,
         mut input: impl FnMut(&D, u32) -> u32,
         mut output: impl FnMut(&mut D, u32, u32),
@@ -58,22 +59,15 @@ pub trait Group {
             output(data, p, x)
         });
     }
+}
 
-    /// As [`Group::each_scanned`], but `x` is the reduction under `op` of all the inputs of `p`'s
-    /// subgroup.
-    #[inline]
-    fn each_reduced<O: WordOp, D: ?Sized>(
-        &mut self,
-        _op: O,
-        data: &mut D,
-        mut input: impl FnMut(&D, u32) -> u32,
-        mut output: impl FnMut(&mut D, u32, u32),
-    ) {
-        self.each(|p| {
-            let x = input(data, p);
-            output(data, p, x)
-        });
-    }
+/// What [`Group::each_combined`] hands each position of a subgroup.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Combine {
+    /// The inclusive scan of the subgroup's inputs up to the position.
+    Scan,
+    /// The reduction of all the subgroup's inputs.
+    Reduce,
 }
 
 /// An associative and commutative operation on words that a subgroup can scan or reduce in one
@@ -175,7 +169,7 @@ pub fn params<P: bytemuck::Pod>(words: &[u32]) -> P {
 
 #[cfg(not(target_arch = "spirv"))]
 mod cpu {
-    use super::{Group, Load, Mem, WordOp};
+    use super::{Combine, Group, Load, Mem, WordOp};
     use core::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
 
     /// A workgroup emulated on one CPU thread: `each` loops over the local ids. With
@@ -187,48 +181,13 @@ mod cpu {
         pub workgroup_id: [u32; 3],
         pub num_workgroups: [u32; 3],
         pub subgroup_size: Option<u32>,
-        /// The barriers it has executed: one an `each`, `each_scanned` or `each_reduced` step.
+        /// The barriers it has executed: one an `each` or `each_combined` step.
         pub barriers: u32,
     }
 
     impl CpuGroup {
         /// The widest subgroup the CPU emulates.
         pub const MAX_SUBGROUP: u32 = 256;
-
-        /// `input` of every position, `op` over each subgroup's inputs (`scan`: the running value;
-        /// else the subgroup's total), then `output`.
-        fn each_combined<O: WordOp, D: ?Sized>(
-            &mut self,
-            op: O,
-            scan: bool,
-            data: &mut D,
-            mut input: impl FnMut(&D, u32) -> u32,
-            mut output: impl FnMut(&mut D, u32, u32),
-        ) {
-            let s = self.subgroup_size.unwrap_or(1);
-            assert!(
-                s.is_power_of_two() && s <= Self::MAX_SUBGROUP && self.size % s == 0,
-                "subgroups of {s} in a workgroup of {}",
-                self.size
-            );
-            self.barriers += 1;
-            let mut words = [0u32; Self::MAX_SUBGROUP as usize];
-            let mut first = 0;
-            while first < self.size {
-                let lanes = &mut words[..s as usize];
-                let mut total = O::IDENTITY;
-                for (lane, w) in (0..).zip(lanes.iter_mut()) {
-                    *w = input(data, first + lane);
-                    total = op.apply(total, *w);
-                }
-                let mut running = O::IDENTITY;
-                for (lane, w) in (0..).zip(lanes.iter()) {
-                    running = op.apply(running, *w);
-                    output(data, first + lane, if scan { running } else { total });
-                }
-                first += s;
-            }
-        }
     }
 
     impl Group for CpuGroup {
@@ -259,25 +218,38 @@ mod cpu {
         fn subgroup_size(&self) -> Option<u32> {
             self.subgroup_size
         }
-        #[inline]
-        fn each_scanned<O: WordOp, D: ?Sized>(
+        /// `input` of every position, `op` over each subgroup's inputs, then `output`.
+        fn each_combined<O: WordOp, D: ?Sized>(
             &mut self,
             op: O,
+            combine: Combine,
             data: &mut D,
-            input: impl FnMut(&D, u32) -> u32,
-            output: impl FnMut(&mut D, u32, u32),
+            mut input: impl FnMut(&D, u32) -> u32,
+            mut output: impl FnMut(&mut D, u32, u32),
         ) {
-            self.each_combined(op, true, data, input, output);
-        }
-        #[inline]
-        fn each_reduced<O: WordOp, D: ?Sized>(
-            &mut self,
-            op: O,
-            data: &mut D,
-            input: impl FnMut(&D, u32) -> u32,
-            output: impl FnMut(&mut D, u32, u32),
-        ) {
-            self.each_combined(op, false, data, input, output);
+            let s = self.subgroup_size.unwrap_or(1);
+            assert!(
+                s.is_power_of_two() && s <= Self::MAX_SUBGROUP && self.size % s == 0,
+                "subgroups of {s} in a workgroup of {}",
+                self.size
+            );
+            self.barriers += 1;
+            let mut words = [0u32; Self::MAX_SUBGROUP as usize];
+            let mut first = 0;
+            while first < self.size {
+                let lanes = &mut words[..s as usize];
+                let mut total = O::IDENTITY;
+                for (lane, w) in (0..).zip(lanes.iter_mut()) {
+                    *w = input(data, first + lane);
+                    total = op.apply(total, *w);
+                }
+                let mut running = O::IDENTITY;
+                for (lane, w) in (0..).zip(lanes.iter()) {
+                    running = op.apply(running, *w);
+                    output(data, first + lane, if combine == Combine::Scan { running } else { total });
+                }
+                first += s;
+            }
         }
     }
 
@@ -371,7 +343,7 @@ pub use cpu::{CpuDispatch, CpuGroup, CpuMem};
 
 #[cfg(target_arch = "spirv")]
 mod gpu {
-    use super::{Group, Load, Mem, WordOp};
+    use super::{Combine, Group, Load, Mem, WordOp};
     use spirv_std::arch::{atomic_i_add, atomic_u_max, control_barrier};
     use spirv_std::memory::{Scope, Semantics};
 
@@ -423,7 +395,7 @@ mod gpu {
     }
 
     impl GpuSubgroupGroup {
-        /// The position this invocation runs in `each_scanned` and `each_reduced`: subgroup-major,
+        /// The position this invocation runs in `each_combined`: subgroup-major,
         /// whatever the local id (Vulkan does not tie one to the other).
         #[inline]
         fn position(&self) -> u32 {
@@ -459,28 +431,20 @@ mod gpu {
             if s >= 2 && s & (s - 1) == 0 && self.num_subgroups * s == self.group.size { Some(s) } else { None }
         }
         #[inline]
-        fn each_scanned<O: WordOp, D: ?Sized>(
+        fn each_combined<O: WordOp, D: ?Sized>(
             &mut self,
             op: O,
+            combine: Combine,
             data: &mut D,
             mut input: impl FnMut(&D, u32) -> u32,
             mut output: impl FnMut(&mut D, u32, u32),
         ) {
             let p = self.position();
-            let x = op.subgroup_inclusive(input(data, p), self.lane, self.subgroup_size);
-            output(data, p, x);
-            self.group.each(|_| {});
-        }
-        #[inline]
-        fn each_reduced<O: WordOp, D: ?Sized>(
-            &mut self,
-            op: O,
-            data: &mut D,
-            mut input: impl FnMut(&D, u32) -> u32,
-            mut output: impl FnMut(&mut D, u32, u32),
-        ) {
-            let p = self.position();
-            let x = op.subgroup_reduce(input(data, p));
+            let v = input(data, p);
+            let x = match combine {
+                Combine::Scan => op.subgroup_inclusive(v, self.lane, self.subgroup_size),
+                Combine::Reduce => op.subgroup_reduce(v),
+            };
             output(data, p, x);
             self.group.each(|_| {});
         }

@@ -1,7 +1,8 @@
-//! Workgroup-level building blocks the kernels share: scans over one word per invocation in
-//! workgroup memory, and the grid-stride loop over items.
+//! Workgroup-level building blocks the kernels share: scans and reductions over one word per
+//! invocation in workgroup memory (in subgroups where the kernel has them), and the grid-stride
+//! loop over items.
 
-use crate::exec::Group;
+use crate::exec::{Combine, Group};
 pub use crate::exec::{Add, Max, WordOp};
 
 /// Inclusive scan under `op` of `sh[base .. base + n]`, `n` the workgroup size (one word per
@@ -40,13 +41,14 @@ fn hillis_steele_scan<G: Group, O: WordOp, const N: usize>(g: &mut G, sh: &mut [
 fn subgroup_scan<G: Group, O: WordOp, const N: usize>(g: &mut G, sh: &mut [u32; N], base: usize, op: O, s: u32) -> usize {
     let shift = s.trailing_zeros();
     let out = base + g.size() as usize;
-    g.each_scanned(op, sh, |sh, p| sh[base + p as usize], |sh, p, x| sh[out + p as usize] = x);
+    g.each_combined(op, Combine::Scan, sh, |sh, p| sh[base + p as usize], |sh, p, x| sh[out + p as usize] = x);
     // Up: `below`, `len`: where the level under the next one starts, and its words.
     let (mut below, mut len, mut at, mut levels) = (out, g.size(), base, 0u32);
     while len > s {
         let runs = len >> shift;
-        g.each_scanned(
+        g.each_combined(
             op,
+            Combine::Scan,
             sh,
             |sh, p| if p < runs { sh[below + ((p + 1) << shift) as usize - 1] } else { O::IDENTITY },
             |sh, p, x| {
@@ -141,8 +143,9 @@ fn subgroup_reduce<G: Group, O: WordOp, const N: usize>(g: &mut G, sh: &mut [u32
     // The level's words are `len` words `1 << stride` apart.
     let (mut len, mut stride) = (g.size(), 0u32);
     while len > s {
-        g.each_reduced(
+        g.each_combined(
             op,
+            Combine::Reduce,
             sh,
             |sh, p| if p < len { sh[base + (p << stride) as usize] } else { O::IDENTITY },
             |sh, p, x| {
@@ -155,8 +158,9 @@ fn subgroup_reduce<G: Group, O: WordOp, const N: usize>(g: &mut G, sh: &mut [u32
     }
     // Every subgroup reads the whole last level, so every invocation gets the total.
     let mut total = O::IDENTITY;
-    g.each_reduced(
+    g.each_combined(
         op,
+        Combine::Reduce,
         sh,
         |sh, p| {
             let k = p & (s - 1);
@@ -214,25 +218,16 @@ mod tests {
         fn subgroup_size(&self) -> Option<u32> {
             self.group.subgroup_size()
         }
-        fn each_scanned<O: WordOp, D: ?Sized>(
+        fn each_combined<O: WordOp, D: ?Sized>(
             &mut self,
             op: O,
+            combine: Combine,
             data: &mut D,
             input: impl FnMut(&D, u32) -> u32,
             output: impl FnMut(&mut D, u32, u32),
         ) {
             self.barriers += 1;
-            self.group.each_scanned(op, data, input, output);
-        }
-        fn each_reduced<O: WordOp, D: ?Sized>(
-            &mut self,
-            op: O,
-            data: &mut D,
-            input: impl FnMut(&D, u32) -> u32,
-            output: impl FnMut(&mut D, u32, u32),
-        ) {
-            self.barriers += 1;
-            self.group.each_reduced(op, data, input, output);
+            self.group.each_combined(op, combine, data, input, output);
         }
     }
 

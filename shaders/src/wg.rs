@@ -2,8 +2,8 @@
 //! invocation in workgroup memory (in subgroups where the kernel has them), and the grid-stride
 //! loop over items.
 
-use crate::exec::{Combine, Group};
 pub use crate::exec::{Add, Max, WordOp};
+use crate::exec::{Combine, Group};
 
 /// Inclusive scan under `op` of `sh[base .. base + n]`, `n` the workgroup size (one word per
 /// invocation, written before the call), using `sh[base + n .. base + 2n]` as well. Returns the

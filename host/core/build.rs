@@ -214,7 +214,8 @@ mod rebuild {
             .multimodule(true)
             .capability(Capability::GroupNonUniform)
             .capability(Capability::GroupNonUniformArithmetic)
-            .capability(Capability::GroupNonUniformShuffleRelative);
+            .capability(Capability::GroupNonUniformShuffleRelative)
+            .shader_crate_features(["subgroup-kernels".to_string()]);
         builder.build_script.defaults = true;
         let result = builder.build()?;
         let ModuleResult::MultiModule(modules) = &result.module else {

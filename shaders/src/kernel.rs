@@ -133,7 +133,9 @@ pub const fn binding_mask(which: &[bool]) -> u32 {
 ///
 /// `[threads subgroups]` also builds the `<entry_fn>::subgroups` entry point
 /// (`KernelDesc::subgroup_entry`): the same body, whose group scans and reduces in subgroups
-/// ([`crate::wg`]). Mark the kernels that scan or reduce.
+/// ([`crate::wg`]). Mark the kernels that scan or reduce. The entry point is compiled where the
+/// crate expanding the macro has the feature `subgroup-kernels` on (this crate's, for its own
+/// kernels) and the SPIR-V build enables the subgroup capabilities.
 ///
 /// Each binding is a name, marked `read` when the kernel only reads it. A `read` binding is declared
 /// `&[u32]` on the GPU (rust-gpu decorates it `NonWritable`) and reaches the body as a
@@ -259,7 +261,7 @@ macro_rules! kernel {
     (@gpu_subgroups [] $($rest:tt)*) => {};
     (@gpu_subgroups [subgroups] [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
         [$($arg:tt)*]) => {
-        #[cfg(target_arch = "spirv")]
+        #[cfg(all(target_arch = "spirv", feature = "subgroup-kernels"))]
         pub mod $entry {
             #[allow(unused_imports)]
             use super::*;

@@ -112,11 +112,11 @@ pub struct WgpuBackend {
     retire: RetireQueue,
 }
 
-/// Whether the kernels' subgroup variants can run on `device`: it has [`wgpu::Features::SUBGROUP`],
-/// and it is not a browser's WebGPU, whose subgroups lack the `subgroup_id` and `num_subgroups`
-/// built-ins the variants read (naga's, which native backends have).
-fn subgroups_usable(device: &wgpu::Device, info: &wgpu::AdapterInfo) -> bool {
-    device.features().contains(wgpu::Features::SUBGROUP) && info.backend != wgpu::Backend::BrowserWebGpu
+/// Whether the kernels' subgroup variants can run on a device of these `features`: it has
+/// [`wgpu::Features::SUBGROUP`], and it is not a browser's WebGPU, whose subgroups lack the
+/// `subgroup_id` and `num_subgroups` built-ins the variants read (naga's, which native backends have).
+fn subgroups_usable(features: wgpu::Features, info: &wgpu::AdapterInfo) -> bool {
+    features.contains(wgpu::Features::SUBGROUP) && info.backend != wgpu::Backend::BrowserWebGpu
 }
 
 impl WgpuBackend {
@@ -136,9 +136,7 @@ impl WgpuBackend {
                 info.name, info.backend
             )));
         }
-        let subgroups = options
-            .subgroups
-            .resolve(adapter.features().contains(wgpu::Features::SUBGROUP) && info.backend != wgpu::Backend::BrowserWebGpu)?;
+        let subgroups = options.subgroups.resolve(subgroups_usable(adapter.features(), &info))?;
         let descriptor = wgpu::DeviceDescriptor {
             label: Some("dof"),
             required_features: wgpu::Features::IMMEDIATES
@@ -173,7 +171,7 @@ impl WgpuBackend {
             max_workgroup_invocations: l.max_compute_invocations_per_workgroup,
             max_workgroup_count: [l.max_compute_workgroups_per_dimension; 3],
             subgroup_size: (info.subgroup_min_size == info.subgroup_max_size).then_some(info.subgroup_min_size),
-            subgroup_kernels: subgroups_usable(&device, &info),
+            subgroup_kernels: subgroups_usable(device.features(), &info),
             max_buffer_bytes: l.max_buffer_size.min(l.max_storage_buffer_binding_size),
             serial_invocations: false,
         };
@@ -210,7 +208,7 @@ impl WgpuBackend {
     /// Whether kernels run their subgroup variants, on this device (`Required` is refused where
     /// [`subgroups_usable`] says no). Pipelines made before are made again.
     pub fn set_subgroups(&mut self, subgroups: Subgroups) -> Result<()> {
-        let on = subgroups.resolve(subgroups_usable(&self.device, &self.info))?;
+        let on = subgroups.resolve(subgroups_usable(self.device.features(), &self.info))?;
         if on != self.limits.subgroup_kernels {
             self.limits.subgroup_kernels = on;
             self.pipelines.clear();

@@ -489,6 +489,13 @@ pub(crate) fn check_draw<B: Backend + ?Sized>(
     Ok(())
 }
 
+/// The entry point a GPU backend makes `kernel`'s pipeline from: its subgroup variant where it
+/// has one and the backend runs them (`Limits::subgroup_kernels`), else the kernel itself.
+#[cfg(any(feature = "vulkan", feature = "wgpu"))]
+pub(crate) fn pipeline_entry(kernel: &KernelDesc, subgroups: bool) -> &'static str {
+    kernel.subgroup_entry.filter(|_| subgroups).unwrap_or(kernel.entry)
+}
+
 /// Checks a dispatch against the kernel's declaration (its buffers and sampled images) and the
 /// device limits (both backends call it, so the CPU backend rejects exactly what Vulkan would).
 pub(crate) fn check_dispatch(

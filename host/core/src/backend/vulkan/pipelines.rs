@@ -81,7 +81,7 @@ impl Pipelines {
         if let Some(p) = self.by_entry.get(kernel.entry) {
             return Ok(*p);
         }
-        let entry = kernel.subgroup_entry.filter(|_| self.subgroups).unwrap_or(kernel.entry);
+        let entry = crate::backend::pipeline_entry(kernel, self.subgroups);
         let (words, name) = self.module(entry).ok_or_else(|| {
             Error::InvalidArgument(format!(
                 "no SPIR-V module holds the entry point `{entry}` (a kernel of your own needs `VulkanBackend::add_modules`)"

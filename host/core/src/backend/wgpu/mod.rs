@@ -304,7 +304,7 @@ impl WgpuBackend {
                 }
             })
             .collect();
-        let entry = kernel.subgroup_entry.filter(|_| self.limits.subgroup_kernels).unwrap_or(kernel.entry);
+        let entry = super::pipeline_entry(kernel, self.limits.subgroup_kernels);
         self.compute_pipeline(entry, &entries, kernel.push_bytes)
     }
 

@@ -195,7 +195,7 @@ struct BevyDevice<'w> {
 fn wgpu_backend<'a>(backend: &'a mut Option<WgpuBackend>, bevy: &BevyDevice) -> &'a mut WgpuBackend {
     backend.get_or_insert_with(|| {
         let backend = WgpuBackend::from_device(bevy.device.wgpu_device().clone(), (**bevy.queue).clone(), (**bevy.adapter).clone());
-        let subgroups = if backend.limits().subgroup_kernels { "in subgroups" } else { "without subgroups (the device has none)" };
+        let subgroups = if backend.limits().subgroup_kernels { "in subgroups" } else { "without subgroups" };
         log::info!("bevy_dof: the kernels scan and reduce {subgroups}");
         backend
     })
